@@ -1,0 +1,207 @@
+//! The parametric convex boundary: the trait every shape of this crate implements, and through
+//! which users add their own convex curves.
+//!
+//! A curve gives, for φ ∈ [−π, π) (any counter-clockwise parametrisation), the boundary point
+//! P(φ), the outward unit normal N(φ), and their first and second derivatives in φ — the four
+//! quantities of the specification's Appendix A. Pieces of a piecewise curve end at
+//! [`ConvexCurve::breakpoints`]; the point and normal are continuous everywhere, derivatives may
+//! jump there.
+//!
+//! Writing ω(φ) = N × N' ≥ 0 (the rate at which the normal turns) and σ(φ) = |P'| (the speed),
+//! P' = σ·T and N' = ω·T with T = N⊥ = (−N_y, N_x) the counter-clockwise tangent. A corner of a
+//! sharp polygon is a φ-interval with σ = 0 < ω; a flat edge one with ω = 0 < σ.
+//!
+//! A curve is *strictly convex* when each unit vector m is the outward normal of exactly one
+//! boundary point S(m) (eq. 4 for an ellipse). Such a curve can be object2 of the algorithms and
+//! implements [`ConvexCurve::support_jet`]: S(m), the radius of curvature ρ(m) = h(ψ) + h''(ψ)
+//! there (h the support function, ψ the angle of m) and dρ/dψ.
+
+use crate::math::{cross, perp, Vector};
+use core::f64::consts::PI;
+use core::fmt::Debug;
+
+/// Boundary point and outward unit normal with their first and second derivatives in φ.
+#[derive(Copy, Clone, Debug, PartialEq, Default)]
+pub struct CurvePoint {
+    /// P(φ).
+    pub point: Vector,
+    /// dP/dφ.
+    pub d_point: Vector,
+    /// d²P/dφ².
+    pub dd_point: Vector,
+    /// N(φ), unit, outward.
+    pub normal: Vector,
+    /// dN/dφ.
+    pub d_normal: Vector,
+    /// d²N/dφ².
+    pub dd_normal: Vector,
+}
+
+impl CurvePoint {
+    /// ω = N × N': how fast the normal angle turns with φ (≥ 0 for a convex curve).
+    #[inline]
+    pub fn normal_turn_rate(&self) -> f64 {
+        cross(self.normal, self.d_normal)
+    }
+    /// dω/dφ = N × N''.
+    #[inline]
+    pub fn d_normal_turn_rate(&self) -> f64 {
+        cross(self.normal, self.dd_normal)
+    }
+    /// σ = P' · T: the speed of the point along the counter-clockwise tangent.
+    #[inline]
+    pub fn speed(&self) -> f64 {
+        self.d_point.dot(perp(self.normal))
+    }
+    /// True when every component is finite.
+    pub fn is_finite(&self) -> bool {
+        self.point.is_finite()
+            && self.d_point.is_finite()
+            && self.dd_point.is_finite()
+            && self.normal.is_finite()
+            && self.d_normal.is_finite()
+            && self.dd_normal.is_finite()
+    }
+}
+
+/// The support point of a strictly convex curve for an outward unit normal m, with what the
+/// algorithms need of its derivatives in ψ = angle(m): dS/dψ = ρ·m⊥, d²S/dψ² = ρ'·m⊥ − ρ·m.
+#[derive(Copy, Clone, Debug, PartialEq, Default)]
+pub struct SupportJet {
+    /// S(m): the boundary point whose outward normal is m.
+    pub point: Vector,
+    /// Radius of curvature ρ at S(m) (> 0 is not required, ≥ 0 is).
+    pub radius_of_curvature: f64,
+    /// dρ/dψ.
+    pub d_radius_of_curvature: f64,
+}
+
+/// A closed convex curve parametrised counter-clockwise by φ ∈ [−π, π).
+///
+/// Implement it to add a shape; wrap the curve in [`crate::CustomCurve`] to use it with parry
+/// and rapier. Implementations must keep P and N continuous over the whole circle (including
+/// the wrap from π to −π), N unit and outward, and ω = N × N' ≥ 0.
+pub trait ConvexCurve: Send + Sync + Debug + 'static {
+    /// Point, normal and their derivatives at φ. φ outside [−π, π) must be wrapped.
+    fn eval(&self, phi: f64) -> CurvePoint;
+
+    /// φ values in [−π, π), sorted, where derivatives may jump (piece ends). Empty when smooth.
+    fn breakpoints(&self) -> &[f64] {
+        &[]
+    }
+
+    /// The largest distance from the local origin to a boundary point.
+    fn bounding_radius(&self) -> f64;
+
+    /// The φ-interval `[lo, hi]` of boundary points whose outward normal is the unit vector
+    /// `n` (`lo == hi` except on a flat piece). `hi` may exceed π when a flat piece wraps.
+    ///
+    /// The default bisects on the normal angle, which is non-decreasing in φ; closed forms are
+    /// faster.
+    fn phi_range_of_normal(&self, n: Vector) -> (f64, f64) {
+        default_phi_range_of_normal(self, n)
+    }
+
+    /// For a strictly convex curve, S(m) with its curvature data (eq. 4); `None` otherwise.
+    fn support_jet(&self, _m: Vector) -> Option<SupportJet> {
+        None
+    }
+
+    /// Whether [`ConvexCurve::support_jet`] is available (the curve can be object2).
+    fn is_strictly_convex(&self) -> bool {
+        false
+    }
+
+    /// An upper bound on the radius of curvature over the whole curve (used by the step guard
+    /// of the time of impact); only needed for strictly convex curves.
+    fn max_radius_of_curvature(&self) -> f64 {
+        f64::INFINITY
+    }
+
+    /// The support point in direction `n` (any unit vector): the boundary point furthest along n.
+    fn support_point(&self, n: Vector) -> Vector {
+        if let Some(j) = self.support_jet(n) {
+            return j.point;
+        }
+        let (lo, hi) = self.phi_range_of_normal(n);
+        let p = self.eval(0.5 * (lo + hi)).point;
+        p
+    }
+}
+
+/// Wraps φ into [−π, π).
+#[inline]
+pub fn wrap_phi(phi: f64) -> f64 {
+    if (-PI..PI).contains(&phi) {
+        phi
+    } else {
+        (phi + PI).rem_euclid(2.0 * PI) - PI
+    }
+}
+
+/// Angle in [0, 2π) from unit vector `a` to unit vector `b`, counter-clockwise.
+#[inline]
+pub(crate) fn ccw_angle(a: Vector, b: Vector) -> f64 {
+    let ang = cross(a, b).atan2(a.dot(b));
+    if ang < 0.0 {
+        ang + 2.0 * PI
+    } else {
+        ang
+    }
+}
+
+fn default_phi_range_of_normal<C: ConvexCurve + ?Sized>(c: &C, n: Vector) -> (f64, f64) {
+    let n = n.normalize_or_zero();
+    let n0 = c.eval(-PI).normal;
+    let target = ccw_angle(n0, n);
+    // Turning angle accumulated from φ = −π, in [0, 2π); non-decreasing in φ except that it
+    // returns to ~0 (or stays at 2π − ε) at the very end of the circle.
+    let turn = |phi: f64| {
+        let a = ccw_angle(n0, c.eval(phi).normal);
+        // Near the end of the circle an angle that wrapped to ~0 means "almost 2π".
+        if phi > 0.0 && a < 1e-3 {
+            a + 2.0 * PI
+        } else {
+            a
+        }
+    };
+    // lo: first φ with turn(φ) >= target; hi: last φ with turn(φ) <= target.
+    let bisect = |pred: &dyn Fn(f64) -> bool| {
+        let (mut a, mut b) = (-PI, PI);
+        for _ in 0..64 {
+            let m = 0.5 * (a + b);
+            if pred(m) {
+                b = m;
+            } else {
+                a = m;
+            }
+        }
+        0.5 * (a + b)
+    };
+    if target == 0.0 {
+        return (-PI, -PI);
+    }
+    let lo = bisect(&|phi| turn(phi) >= target);
+    let hi = bisect(&|phi| turn(phi) > target);
+    (lo, hi.max(lo))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn wrap_phi_maps_into_half_open_circle() {
+        assert_eq!(wrap_phi(0.5), 0.5);
+        assert!((wrap_phi(PI) + PI).abs() < 1e-15);
+        assert!((wrap_phi(3.0 * PI + 0.25) - (-PI + 0.25)).abs() < 1e-12);
+        assert!((wrap_phi(-PI - 0.25) - (PI - 0.25)).abs() < 1e-12);
+    }
+
+    #[test]
+    fn ccw_angle_is_in_zero_two_pi() {
+        let a = Vector::new(1.0, 0.0);
+        assert!((ccw_angle(a, Vector::new(0.0, 1.0)) - PI / 2.0).abs() < 1e-15);
+        assert!((ccw_angle(a, Vector::new(0.0, -1.0)) - 1.5 * PI).abs() < 1e-15);
+    }
+}

@@ -1,0 +1,1 @@
+//! A concrete parry shape wrapping a user-defined [`crate::ConvexCurve`] (in progress).

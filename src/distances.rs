@@ -1,0 +1,370 @@
+//! The three distances of the specification — distanceEuclidean, distanceFwd, distanceSide —
+//! with their gradient and Hessian in (φ, t) (eq. 6).
+//!
+//! Everything is computed in object2's local frame. At time t object1's boundary point and
+//! outward normal there are
+//!
+//!     P(φ, t) = q(t) + R(β(t))·(P₁(φ) − c₁),     N(φ, t) = R(β(t))·N₁(φ),
+//!
+//! where c₁ is object1's rotation centre (its `local_center`), β = α₁ − α₂ the relative angle
+//! (β' = ω = ω₁ − ω₂) and q(t) = R(−α₂)(C₁ − C₂) + c₂ the position of object1's rotation centre
+//! (C₁, C₂ the world rotation centres, moving linearly). With m = −N and S₂ object2's support
+//! point (eq. 4):
+//!
+//!     d = S₂(m) − P,   F = d·N,   S = d × N,   E = |d|.
+//!
+//! Derivatives: ψ = angle(m) moves with ∂ψ/∂φ = ω₁(φ) = N₁ × N₁', ∂ψ/∂t = ω; S₂ moves along its
+//! tangent τ = m⊥ with dS₂/dψ = ρ₂τ and d²S₂/dψ² = ρ₂'τ − ρ₂m. q' and q'' follow from
+//! Q = R(−α₂)ΔC: Q' = −ω₂Q⊥ + V, Q'' = −ω₂²Q − 2ω₂V⊥ with V = R(−α₂)ΔC'. All products are
+//! carried out in [`Jet2`] arithmetic.
+//!
+//! Identities the tests pin (DESIGN § 2): ∂F/∂φ = −ω₁·S, and at S = 0 ∂S/∂φ = ω₁(ρ₁ + ρ₂ + F).
+
+use crate::curve::{ConvexCurve, CurvePoint, SupportJet};
+use crate::jet::{Jet2, JetVec};
+use crate::math::{perp, Pose, Vector};
+use parry2d_f64::query::NonlinearRigidMotion;
+
+/// Object1's placement in object2's frame at one time t, with the time derivatives the jets need.
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub struct PairFrame {
+    /// cos β(t).
+    pub cos_b: f64,
+    /// sin β(t).
+    pub sin_b: f64,
+    /// ω = dβ/dt.
+    pub omega: f64,
+    /// Object1's rotation centre c₁ in its own frame.
+    pub center1: Vector,
+    /// q(t): object1's rotation centre in object2's frame.
+    pub q: Vector,
+    /// dq/dt.
+    pub q_t: Vector,
+    /// d²q/dt².
+    pub q_tt: Vector,
+    /// The time t.
+    pub time: f64,
+}
+
+impl PairFrame {
+    /// A fixed configuration: `pos12` is the pose of object2 in object1's frame (parry's
+    /// convention). Time derivatives are zero.
+    pub fn from_pos12(pos12: &Pose) -> Self {
+        let pos21 = pos12.inverse();
+        Self {
+            cos_b: pos21.rotation.cos(),
+            sin_b: pos21.rotation.sin(),
+            omega: 0.0,
+            center1: Vector::ZERO,
+            q: pos21.translation,
+            q_t: Vector::ZERO,
+            q_tt: Vector::ZERO,
+            time: 0.0,
+        }
+    }
+
+    /// Rotates a vector of object1's frame into object2's frame.
+    #[inline]
+    pub fn rotate(&self, v: Vector) -> Vector {
+        Vector::new(self.cos_b * v.x - self.sin_b * v.y, self.sin_b * v.x + self.cos_b * v.y)
+    }
+
+    /// Rotates a vector of object2's frame into object1's frame.
+    #[inline]
+    pub fn unrotate(&self, v: Vector) -> Vector {
+        Vector::new(self.cos_b * v.x + self.sin_b * v.y, -self.sin_b * v.x + self.cos_b * v.y)
+    }
+
+    /// Maps a point of object1's frame into object2's frame.
+    #[inline]
+    pub fn to_frame2(&self, p1: Vector) -> Vector {
+        self.q + self.rotate(p1 - self.center1)
+    }
+
+    /// Maps a point of object2's frame into object1's frame.
+    #[inline]
+    pub fn to_frame1(&self, p2: Vector) -> Vector {
+        self.center1 + self.unrotate(p2 - self.q)
+    }
+
+    /// The pose of object2 in object1's frame (parry's `pos12`) at this time.
+    pub fn pos12(&self) -> Pose {
+        // x₂ = q + R(x₁ − c₁)  ⇔  x₁ = Rᵀ(x₂ − q) + c₁.
+        let rot = parry2d_f64::math::Rotation::from_cos_sin_unchecked(self.cos_b, -self.sin_b);
+        Pose::from_parts(self.center1 - rot.transform_vector(self.q), rot)
+    }
+}
+
+/// The relative motion of object1 with respect to object2 under parry's `NonlinearRigidMotion`
+/// of each, ready to produce a [`PairFrame`] at any time.
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub struct RelativeMotion {
+    beta0: f64,
+    omega: f64,
+    alpha2_0: f64,
+    omega2: f64,
+    dc0: Vector,
+    dv: Vector,
+    center1: Vector,
+    center2: Vector,
+}
+
+impl RelativeMotion {
+    /// The relative motion of `m1` (object1) seen from `m2` (object2).
+    pub fn new(m1: &NonlinearRigidMotion, m2: &NonlinearRigidMotion) -> Self {
+        let a1 = m1.start.rotation.angle();
+        let a2 = m2.start.rotation.angle();
+        Self {
+            beta0: a1 - a2,
+            omega: m1.angvel - m2.angvel,
+            alpha2_0: a2,
+            omega2: m2.angvel,
+            dc0: m1.start * m1.local_center - m2.start * m2.local_center,
+            dv: m1.linvel - m2.linvel,
+            center1: m1.local_center,
+            center2: m2.local_center,
+        }
+    }
+
+    /// The relative angular velocity ω = ω₁ − ω₂.
+    pub fn omega(&self) -> f64 {
+        self.omega
+    }
+
+    /// Object2's angular velocity.
+    pub fn omega2(&self) -> f64 {
+        self.omega2
+    }
+
+    /// World-frame offset between the rotation centres, C₁(t) − C₂(t) = ΔC₀ + ΔV·t.
+    pub fn center_offset(&self, t: f64) -> Vector {
+        self.dc0 + self.dv * t
+    }
+
+    /// Relative linear velocity ΔV of the rotation centres (world frame).
+    pub fn center_velocity(&self) -> Vector {
+        self.dv
+    }
+
+    /// Object1's and object2's rotation centres in their own frames.
+    pub fn centers(&self) -> (Vector, Vector) {
+        (self.center1, self.center2)
+    }
+
+    /// The frame at time t.
+    #[inline]
+    pub fn frame(&self, t: f64) -> PairFrame {
+        let (sb, cb) = (self.beta0 + self.omega * t).sin_cos();
+        let (s2, c2) = (self.alpha2_0 + self.omega2 * t).sin_cos();
+        // R(−α₂) v = (c v_x + s v_y, −s v_x + c v_y)
+        let rinv = |v: Vector| Vector::new(c2 * v.x + s2 * v.y, -s2 * v.x + c2 * v.y);
+        let big_q = rinv(self.dc0 + self.dv * t);
+        let v = rinv(self.dv);
+        let w2 = self.omega2;
+        let q_t = -perp(big_q) * w2 + v;
+        let q_tt = -big_q * (w2 * w2) - perp(v) * (2.0 * w2);
+        PairFrame {
+            cos_b: cb,
+            sin_b: sb,
+            omega: self.omega,
+            center1: self.center1,
+            q: big_q + self.center2,
+            q_t,
+            q_tt,
+            time: t,
+        }
+    }
+}
+
+/// distanceFwd, distanceSide and distanceEuclidean with gradient and Hessian in (φ, t), and the
+/// geometry behind them, at one (φ, t).
+#[derive(Copy, Clone, Debug, PartialEq, Default)]
+pub struct PairJet {
+    /// distanceFwd F = d·N.
+    pub fwd: Jet2,
+    /// distanceSide S = d × N.
+    pub side: Jet2,
+    /// Object1's boundary point and derivatives in φ, in its own frame.
+    pub curve1: CurvePoint,
+    /// Object2's support data at m = −N (point in object2's frame).
+    pub support2: SupportJet,
+    /// Object1's boundary point P in object2's frame.
+    pub point1_in_2: Vector,
+    /// N in object2's frame.
+    pub normal_in_2: Vector,
+}
+
+impl PairJet {
+    /// distanceEuclidean E = |d| with its derivatives (undefined derivatives at d = 0 come out
+    /// infinite; the value is then 0).
+    pub fn euclidean(&self) -> Jet2 {
+        let d = self.support2.point - self.point1_in_2;
+        // E² = F² + S² since N is unit; E = √(F² + S²).
+        let e2 = self.fwd * self.fwd + self.side * self.side;
+        if d.length_squared() == 0.0 {
+            return Jet2::cst(0.0);
+        }
+        e2.sqrt()
+    }
+}
+
+#[inline]
+fn rot_jet(fr: &PairFrame, v: Vector, v_p: Vector, v_pp: Vector) -> JetVec {
+    let a = fr.rotate(v);
+    let a_p = fr.rotate(v_p);
+    let a_pp = fr.rotate(v_pp);
+    let w = fr.omega;
+    let a_t = perp(a) * w;
+    let a_pt = perp(a_p) * w;
+    let a_tt = -a * (w * w);
+    JetVec {
+        x: Jet2 { v: a.x, p: a_p.x, t: a_t.x, pp: a_pp.x, pt: a_pt.x, tt: a_tt.x },
+        y: Jet2 { v: a.y, p: a_p.y, t: a_t.y, pp: a_pp.y, pt: a_pt.y, tt: a_tt.y },
+    }
+}
+
+/// Evaluates the pair at φ in the frame `fr`: F, S (and E through [`PairJet::euclidean`]) with
+/// gradient and Hessian in (φ, t). `obj2` must be strictly convex; returns `None` otherwise or
+/// when the result is not finite.
+#[inline]
+pub fn eval_pair(obj1: &dyn ConvexCurve, obj2: &dyn ConvexCurve, fr: &PairFrame, phi: f64) -> Option<PairJet> {
+    let cp = obj1.eval(phi);
+    eval_pair_at(cp, obj2, fr)
+}
+
+/// As [`eval_pair`] from an already evaluated boundary point of object1.
+#[inline]
+pub fn eval_pair_at(cp: CurvePoint, obj2: &dyn ConvexCurve, fr: &PairFrame) -> Option<PairJet> {
+    let mut p = rot_jet(fr, cp.point - fr.center1, cp.d_point, cp.dd_point);
+    p.x.v += fr.q.x;
+    p.y.v += fr.q.y;
+    p.x.t += fr.q_t.x;
+    p.y.t += fr.q_t.y;
+    p.x.tt += fr.q_tt.x;
+    p.y.tt += fr.q_tt.y;
+    let n = rot_jet(fr, cp.normal, cp.d_normal, cp.dd_normal);
+    let m = Vector::new(-n.x.v, -n.y.v);
+    let sj = obj2.support_jet(m)?;
+    let w = cp.normal_turn_rate();
+    let w_p = cp.d_normal_turn_rate();
+    let om = fr.omega;
+    let tau = perp(m);
+    let rho = sj.radius_of_curvature;
+    let k = tau * sj.d_radius_of_curvature - m * rho;
+    let s_p = tau * (rho * w);
+    let s_t = tau * (rho * om);
+    let s_pp = k * (w * w) + tau * (rho * w_p);
+    let s_pt = k * (w * om);
+    let s_tt = k * (om * om);
+    let s2 = JetVec {
+        x: Jet2 { v: sj.point.x, p: s_p.x, t: s_t.x, pp: s_pp.x, pt: s_pt.x, tt: s_tt.x },
+        y: Jet2 { v: sj.point.y, p: s_p.y, t: s_t.y, pp: s_pp.y, pt: s_pt.y, tt: s_tt.y },
+    };
+    let d = s2 - p;
+    let fwd = d.dot(n);
+    let side = d.cross(n);
+    if !(fwd.is_finite() && side.is_finite()) {
+        return None;
+    }
+    Some(PairJet {
+        fwd,
+        side,
+        curve1: cp,
+        support2: sj,
+        point1_in_2: Vector::new(p.x.v, p.y.v),
+        normal_in_2: Vector::new(n.x.v, n.y.v),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{BallCurve, CapsuleEllipse, Ellipse, RoundedPolygon};
+
+    fn motion(x: f64, y: f64, a: f64, vx: f64, vy: f64, w: f64, c: Vector) -> NonlinearRigidMotion {
+        NonlinearRigidMotion::new(Pose::new(Vector::new(x, y), a), c, Vector::new(vx, vy), w)
+    }
+
+    /// Brute-force F and S at (φ, t) from parry's `position_at_time` (a second route).
+    fn brute(o1: &dyn ConvexCurve, o2: &dyn ConvexCurve, m1: &NonlinearRigidMotion, m2: &NonlinearRigidMotion, phi: f64, t: f64) -> (f64, f64) {
+        let (p1, p2) = (m1.position_at_time(t), m2.position_at_time(t));
+        let cp = o1.eval(phi);
+        let pw = p1 * cp.point;
+        let nw = p1.rotation * cp.normal;
+        let pl = p2.inverse_transform_point(pw);
+        let nl = p2.rotation.inverse_transform_vector(nw);
+        let s2 = o2.support_jet(-nl).unwrap().point;
+        let d = s2 - pl;
+        (d.dot(nl), crate::math::cross(d, nl))
+    }
+
+    fn check_pair(o1: &dyn ConvexCurve, o2: &dyn ConvexCurve) {
+        let m1 = motion(-1.3, 0.4, 0.3, 0.7, -0.2, 2.5, Vector::new(0.1, -0.05));
+        let m2 = motion(1.0, 0.5, 1.0, -0.3, 0.1, -1.2, Vector::new(-0.02, 0.03));
+        let rel = RelativeMotion::new(&m1, &m2);
+        let bps = o1.breakpoints().to_vec();
+        for k in 0..40 {
+            let phi = -3.1 + 0.155 * k as f64;
+            if bps.iter().any(|b| (b - phi).abs() < 2e-3) {
+                continue;
+            }
+            for t in [0.0, 0.37, 1.1] {
+                let j = eval_pair(o1, o2, &rel.frame(t), phi).unwrap();
+                let (f, s) = brute(o1, o2, &m1, &m2, phi, t);
+                assert!((j.fwd.v - f).abs() < 1e-12 && (j.side.v - s).abs() < 1e-12, "value at φ={phi}, t={t}");
+                let h = 1e-5;
+                let fd = |dp: f64, dt: f64| brute(o1, o2, &m1, &m2, phi + dp, t + dt);
+                let (fp, sp) = fd(h, 0.0);
+                let (fm, sm) = fd(-h, 0.0);
+                let (ftp, stp) = fd(0.0, h);
+                let (ftm, stm) = fd(0.0, -h);
+                let tol1 = 1e-7;
+                assert!((j.fwd.p - (fp - fm) / (2.0 * h)).abs() < tol1, "F_φ φ={phi} t={t}");
+                assert!((j.side.p - (sp - sm) / (2.0 * h)).abs() < tol1, "S_φ");
+                assert!((j.fwd.t - (ftp - ftm) / (2.0 * h)).abs() < tol1, "F_t");
+                assert!((j.side.t - (stp - stm) / (2.0 * h)).abs() < tol1, "S_t");
+                let tol2 = 1e-4;
+                assert!((j.fwd.pp - (fp - 2.0 * f + fm) / (h * h)).abs() < tol2, "F_φφ");
+                assert!((j.side.pp - (sp - 2.0 * s + sm) / (h * h)).abs() < tol2, "S_φφ");
+                assert!((j.fwd.tt - (ftp - 2.0 * f + ftm) / (h * h)).abs() < tol2, "F_tt");
+                assert!((j.side.tt - (stp - 2.0 * s + stm) / (h * h)).abs() < tol2, "S_tt");
+                let (fpp, spp) = fd(h, h);
+                let (fpm, spm) = fd(h, -h);
+                let (fmp, smp) = fd(-h, h);
+                let (fmm, smm) = fd(-h, -h);
+                assert!((j.fwd.pt - (fpp - fpm - fmp + fmm) / (4.0 * h * h)).abs() < tol2, "F_φt");
+                assert!((j.side.pt - (spp - spm - smp + smm) / (4.0 * h * h)).abs() < tol2, "S_φt");
+                // Identity ∂F/∂φ = −ω₁ S (DESIGN § 2).
+                let w = j.curve1.normal_turn_rate();
+                assert!((j.fwd.p + w * j.side.v).abs() < 1e-12 * (1.0 + j.fwd.p.abs()));
+                // E² = F² + S² and E = |d|.
+                let e = j.euclidean();
+                assert!((e.v - (f * f + s * s).sqrt()).abs() < 1e-12);
+            }
+        }
+    }
+
+    #[test]
+    fn jets_match_finite_differences_and_parry_poses_ellipse_ellipse() {
+        check_pair(&Ellipse::new(0.5, 0.8), &Ellipse::new(0.5, 2.0));
+    }
+
+    #[test]
+    fn jets_match_finite_differences_and_parry_poses_polygon_and_capsule_ellipse() {
+        check_pair(&RoundedPolygon::regular(7, 1.0, 0.15), &Ellipse::new(0.5, 1.5));
+        check_pair(&RoundedPolygon::regular(5, 1.0, 0.0), &BallCurve { radius: 0.4 });
+        check_pair(&CapsuleEllipse::new(0.5, 1.0, 0.8), &Ellipse::new(0.3, 0.9));
+    }
+
+    #[test]
+    fn pair_frame_pos12_round_trips() {
+        let pos12 = Pose::new(Vector::new(0.3, -1.2), 0.7);
+        let fr = PairFrame::from_pos12(&pos12);
+        let back = fr.pos12();
+        assert!((back.translation - pos12.translation).length() < 1e-14);
+        assert!((back.rotation.angle() - 0.7).abs() < 1e-14);
+        let x = Vector::new(0.2, 0.9);
+        assert!((fr.to_frame1(fr.to_frame2(x)) - x).length() < 1e-14);
+        assert!((fr.to_frame2(x) - pos12.inverse_transform_point(x)).length() < 1e-14);
+    }
+}

@@ -1,0 +1,186 @@
+//! The ellipse x = a cos E, y = b sin E (eq. 1), parametrised by its normal angle.
+//!
+//! φ is the angle of the outward normal N = (cos φ, sin φ). With h(φ) = √(a² cos² φ + b² sin² φ)
+//! (the support function), the boundary point is eq. 4 applied to N:
+//!
+//!     P(φ) = (a² cos φ, b² sin φ) / h(φ),
+//!
+//! and the radius of curvature is ρ(φ) = a² b² / h³. The eccentric anomaly E of eq. 1 and the
+//! normal angle are related by tan φ = (a/b) tan E ([`Ellipse::normal_angle_from_eccentric`],
+//! [`Ellipse::eccentric_from_normal_angle`]); eq. 5's starting value is the eccentric anomaly of
+//! the boundary point in a given direction. Using the normal angle keeps the tip of a 1:1000
+//! ellipse as wide in φ as its flank, which removes the squeeze of the specification's
+//! Appendix C.
+
+use crate::curve::{ConvexCurve, CurvePoint, SupportJet};
+use crate::error::{positive, ShapeError};
+use crate::jet::Dual2;
+use crate::math::Vector;
+
+/// An ellipse centred at the origin with semi-axes `half_x` (a) and `half_y` (b).
+#[derive(Copy, Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct Ellipse {
+    /// Semi-axis along x (a).
+    pub half_x: f64,
+    /// Semi-axis along y (b).
+    pub half_y: f64,
+}
+
+impl Ellipse {
+    /// An ellipse with semi-axes `half_x`, `half_y`.
+    ///
+    /// # Panics
+    /// When a semi-axis is not finite and positive; the message names it. See [`Ellipse::try_new`].
+    pub fn new(half_x: f64, half_y: f64) -> Self {
+        match Self::try_new(half_x, half_y) {
+            Ok(e) => e,
+            Err(e) => panic!("Ellipse::new: {e}"),
+        }
+    }
+
+    /// An ellipse with semi-axes `half_x`, `half_y`, or why not.
+    pub fn try_new(half_x: f64, half_y: f64) -> Result<Self, ShapeError> {
+        Ok(Self { half_x: positive("half_x", half_x)?, half_y: positive("half_y", half_y)? })
+    }
+
+    /// The normal angle φ at eccentric anomaly E: φ = atan2(a sin E, b cos E).
+    pub fn normal_angle_from_eccentric(&self, e: f64) -> f64 {
+        (self.half_x * e.sin()).atan2(self.half_y * e.cos())
+    }
+
+    /// The eccentric anomaly E at normal angle φ: E = atan2(b sin φ, a cos φ).
+    pub fn eccentric_from_normal_angle(&self, phi: f64) -> f64 {
+        (self.half_y * phi.sin()).atan2(self.half_x * phi.cos())
+    }
+
+    /// Eq. 5: the eccentric anomaly of the boundary point in direction `dir` from the centre.
+    pub fn eccentric_toward(&self, dir: Vector) -> f64 {
+        (self.half_x * dir.y).atan2(self.half_y * dir.x)
+    }
+
+    /// Eq. 1: the point at eccentric anomaly E.
+    pub fn point_at_eccentric(&self, e: f64) -> Vector {
+        Vector::new(self.half_x * e.cos(), self.half_y * e.sin())
+    }
+
+    /// Eq. 2: the outward unit normal at eccentric anomaly E.
+    pub fn normal_at_eccentric(&self, e: f64) -> Vector {
+        Vector::new(e.cos() / self.half_x, e.sin() / self.half_y).normalize()
+    }
+
+    /// Eq. 4: the boundary point whose outward normal is the unit vector `n`.
+    #[inline]
+    pub fn point_with_normal(&self, n: Vector) -> Vector {
+        let (a2, b2) = (self.half_x * self.half_x, self.half_y * self.half_y);
+        let h = (a2 * n.x * n.x + b2 * n.y * n.y).sqrt();
+        Vector::new(a2 * n.x, b2 * n.y) / h
+    }
+}
+
+impl ConvexCurve for Ellipse {
+    fn eval(&self, phi: f64) -> CurvePoint {
+        let (a2, b2) = (self.half_x * self.half_x, self.half_y * self.half_y);
+        let x = Dual2::var(phi);
+        let (c, s) = (x.cos(), x.sin());
+        let h = (c * c).scale(a2) + (s * s).scale(b2);
+        let inv_h = h.sqrt().recip();
+        let px = (c * inv_h).scale(a2);
+        let py = (s * inv_h).scale(b2);
+        CurvePoint {
+            point: Vector::new(px.v, py.v),
+            d_point: Vector::new(px.d, py.d),
+            dd_point: Vector::new(px.dd, py.dd),
+            normal: Vector::new(c.v, s.v),
+            d_normal: Vector::new(c.d, s.d),
+            dd_normal: Vector::new(c.dd, s.dd),
+        }
+    }
+
+    fn bounding_radius(&self) -> f64 {
+        self.half_x.max(self.half_y)
+    }
+
+    fn phi_range_of_normal(&self, n: Vector) -> (f64, f64) {
+        let phi = n.y.atan2(n.x);
+        (phi, phi)
+    }
+
+    #[inline]
+    fn support_jet(&self, m: Vector) -> Option<SupportJet> {
+        let (a2, b2) = (self.half_x * self.half_x, self.half_y * self.half_y);
+        let h2 = a2 * m.x * m.x + b2 * m.y * m.y;
+        let h = h2.sqrt();
+        let inv_h = 1.0 / h;
+        let rho = a2 * b2 * inv_h * inv_h * inv_h;
+        let dh = (b2 - a2) * m.x * m.y * inv_h;
+        Some(SupportJet {
+            point: Vector::new(a2 * m.x * inv_h, b2 * m.y * inv_h),
+            radius_of_curvature: rho,
+            d_radius_of_curvature: -3.0 * rho * dh * inv_h,
+        })
+    }
+
+    fn is_strictly_convex(&self) -> bool {
+        true
+    }
+
+    fn max_radius_of_curvature(&self) -> f64 {
+        let (a, b) = (self.half_x, self.half_y);
+        (a * a / b).max(b * b / a)
+    }
+
+    fn support_point(&self, n: Vector) -> Vector {
+        self.point_with_normal(n.normalize_or(Vector::X))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn normal_angle_and_eccentric_anomaly_are_inverse() {
+        let e = Ellipse::new(0.5, 2.0);
+        for k in -10..10 {
+            let ecc = k as f64 * 0.3;
+            let phi = e.normal_angle_from_eccentric(ecc);
+            let back = e.eccentric_from_normal_angle(phi);
+            assert!((e.point_at_eccentric(ecc) - e.point_at_eccentric(back)).length() < 1e-14);
+            let cp = e.eval(phi);
+            assert!((cp.point - e.point_at_eccentric(ecc)).length() < 1e-14);
+            assert!((cp.normal - e.normal_at_eccentric(ecc)).length() < 1e-14);
+        }
+    }
+
+    #[test]
+    fn support_jet_curvature_matches_finite_differences() {
+        let e = Ellipse::new(0.3, 1.7);
+        for k in 0..20 {
+            let psi = -3.0 + 0.3 * k as f64;
+            let m = Vector::new(psi.cos(), psi.sin());
+            let j = e.support_jet(m).unwrap();
+            let h = 1e-5;
+            let sp = |a: f64| e.support_jet(Vector::new(a.cos(), a.sin())).unwrap();
+            let ds = (sp(psi + h).point - sp(psi - h).point) / (2.0 * h);
+            let tangent = Vector::new(-m.y, m.x);
+            assert!((ds - tangent * j.radius_of_curvature).length() < 1e-6 * j.radius_of_curvature.max(1.0));
+            let drho = (sp(psi + h).radius_of_curvature - sp(psi - h).radius_of_curvature) / (2.0 * h);
+            assert!((drho - j.d_radius_of_curvature).abs() < 1e-5 * (1.0 + drho.abs()));
+        }
+    }
+
+    #[test]
+    fn try_new_rejects_bad_semi_axes() {
+        assert!(matches!(Ellipse::try_new(0.0, 1.0), Err(ShapeError::NotPositive { name: "half_x", .. })));
+        assert!(matches!(Ellipse::try_new(1.0, f64::NAN), Err(ShapeError::NotFinite { name: "half_y", .. })));
+        assert!(matches!(Ellipse::try_new(-1.0, 1.0), Err(ShapeError::NotPositive { .. })));
+        assert!(Ellipse::try_new(f64::INFINITY, 1.0).is_err());
+    }
+
+    #[test]
+    #[should_panic(expected = "half_y")]
+    fn new_panics_naming_the_parameter() {
+        let _ = Ellipse::new(1.0, -2.0);
+    }
+}

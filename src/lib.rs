@@ -1,0 +1,51 @@
+//! # smooth-ccd2d
+//!
+//! Smooth convex shapes for [parry2d-f64] and [rapier2d-f64] — ellipses, rounded polygons,
+//! piecewise-smooth convex curves — with an exact stationary distance and an exact time of
+//! impact between two of them while both translate and spin.
+//!
+//! ## Conventions (stated once, used everywhere)
+//!
+//! * **Boundary parameter φ** ∈ [−π, π), counter-clockwise, see [`ConvexCurve`]. Built-in
+//!   shapes: [`Ellipse`] and [`BallCurve`] use the outward normal angle; [`RoundedPolygon`]
+//!   alternates corner and edge pieces starting at φ = −π; [`CapsuleEllipse`] uses the
+//!   specification's own parameter (Appendix A).
+//! * **Orientation**: counter-clockwise; `a × b = a_x b_y − a_y b_x`; T = N⊥ = (−N_y, N_x).
+//! * **Roles**: *object1* is any convex curve; *object2* must be strictly convex (its contact
+//!   point comes from the normal, eq. 4). Computations happen in object2's local frame.
+//! * **The three distances**, with d = S₂(−N) − P₁(φ) in object2's frame:
+//!   distanceEuclidean = |d|, distanceFwd F = d·N, distanceSide S = d × N ([`distances`]).
+//!   max over φ of F is the signed distance (negative: penetration depth).
+//! * **`pos12`** is parry's: the pose of shape 2 in shape 1's local frame. Witness points and
+//!   normals are returned in each shape's own local frame; `normal1` points from shape 1
+//!   towards shape 2, `normal2 = −normal1` expressed in shape 2's frame.
+//! * **Motion** is parry's `NonlinearRigidMotion`: the point `start * local_center` moves at
+//!   constant `linvel`, the body spins at constant `angvel` about it; times are absolute, the
+//!   window is `[start_time, end_time]`.
+//!
+//! [parry2d-f64]: https://docs.rs/parry2d-f64
+//! [rapier2d-f64]: https://docs.rs/rapier2d-f64
+#![warn(missing_docs)]
+
+pub mod ball_curve;
+pub mod capsule_ellipse;
+pub mod curve;
+pub mod custom_curve;
+pub mod distances;
+pub mod ellipse;
+pub mod error;
+pub mod jet;
+pub mod math;
+pub mod parry_shape;
+pub mod rounded_polygon;
+pub mod stationary;
+
+pub use ball_curve::BallCurve;
+pub use capsule_ellipse::CapsuleEllipse;
+pub use curve::{wrap_phi, ConvexCurve, CurvePoint, SupportJet};
+pub use distances::{PairFrame, PairJet};
+pub use ellipse::Ellipse;
+pub use error::ShapeError;
+pub use jet::{Dual2, Jet2, JetVec};
+pub use rounded_polygon::RoundedPolygon;
+pub use stationary::{stationary_distance, DistanceOptions, DistanceStatus, QueryError, StationaryDistance};

@@ -1,0 +1,1 @@
+//! parry `Shape` implementations for the crate's shapes (in progress).
