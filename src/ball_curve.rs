@@ -41,6 +41,9 @@ impl ConvexCurve for BallCurve {
     fn max_radius_of_curvature(&self) -> f64 {
         self.radius
     }
+    fn support_dd_bound(&self) -> f64 {
+        0.0
+    }
     fn support_point(&self, n: Vector) -> Vector {
         n.normalize_or(Vector::X) * self.radius
     }

@@ -118,6 +118,14 @@ pub trait ConvexCurve: Send + Sync + Debug + 'static {
         f64::INFINITY
     }
 
+    /// An upper bound on |h''(ψ)| = |ρ(ψ) − h(ψ)| over all directions, with h the support
+    /// function about the local origin (strictly convex curves only). The time of impact's
+    /// step guard multiplies it by the squared relative spin. The default,
+    /// `max_radius_of_curvature() + bounding_radius()`, is always valid.
+    fn support_dd_bound(&self) -> f64 {
+        self.max_radius_of_curvature() + self.bounding_radius()
+    }
+
     /// The support point in direction `n` (any unit vector): the boundary point furthest along n.
     fn support_point(&self, n: Vector) -> Vector {
         if let Some(j) = self.support_jet(n) {

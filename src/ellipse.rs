@@ -130,6 +130,12 @@ impl ConvexCurve for Ellipse {
         (a * a / b).max(b * b / a)
     }
 
+    fn support_dd_bound(&self) -> f64 {
+        // h ∈ [small, big], ρ ∈ [small²/big, big²/small]: |ρ − h| ≤ big²/small − small.
+        let (small, big) = (self.half_x.min(self.half_y), self.half_x.max(self.half_y));
+        big * big / small - small
+    }
+
     fn support_point(&self, n: Vector) -> Vector {
         self.point_with_normal(n.normalize_or(Vector::X))
     }

@@ -39,6 +39,7 @@ pub mod math;
 pub mod parry_shape;
 pub mod rounded_polygon;
 pub mod stationary;
+pub mod toi;
 
 pub use ball_curve::BallCurve;
 pub use capsule_ellipse::CapsuleEllipse;
@@ -48,4 +49,5 @@ pub use ellipse::Ellipse;
 pub use error::ShapeError;
 pub use jet::{Dual2, Jet2, JetVec};
 pub use rounded_polygon::RoundedPolygon;
+pub use toi::{time_of_impact, time_of_impact_traced, ToiCost, ToiOptions, ToiStatus, TimeOfImpact, TraceEvent};
 pub use stationary::{stationary_distance, DistanceOptions, DistanceStatus, QueryError, StationaryDistance};

@@ -226,7 +226,7 @@ impl ConvexCurve for RoundedPolygon {
             }
         } else {
             let e = self.edge_normals[i];
-            let dir = -perp(e);
+            let dir = perp(e);
             let len = self.edge_lengths[i];
             let s = (u / self.k).clamp(0.0, len);
             CurvePoint {
@@ -251,21 +251,25 @@ impl ConvexCurve for RoundedPolygon {
     fn phi_range_of_normal(&self, m: Vector) -> (f64, f64) {
         let n = self.vertices.len();
         // Corner i covers normals from e_{i-1} (exclusive) to e_i (inclusive as edge i).
+        let edge_range = |i: usize| (self.piece_starts[2 * i + 1], self.piece_starts[2 * i + 2]);
         for i in 0..n {
             let e_prev = self.edge_normals[(i + n - 1) % n];
             let e = self.edge_normals[i];
             let span = ccw_angle(e_prev, e);
             let a = ccw_angle(e_prev, m);
+            if a == 0.0 || (m - e_prev).length_squared() < 1e-30 {
+                return edge_range((i + n - 1) % n);
+            }
             if a < span {
                 let phi = self.piece_starts[2 * i] + a * self.k * self.corner_scale;
                 return (phi, phi);
             }
             if a == span || (m - e).length_squared() < 1e-30 {
-                return (self.piece_starts[2 * i + 1], self.piece_starts[2 * i + 2]);
+                return edge_range(i);
             }
         }
         // Only reachable through rounding: the normal sits on edge n−1's boundary.
-        (self.piece_starts[2 * n - 1], self.piece_starts[2 * n])
+        edge_range(n - 1)
     }
 
     fn support_point(&self, m: Vector) -> Vector {
@@ -308,7 +312,7 @@ mod tests {
             let p = RoundedPolygon::regular(5, 1.0, r);
             for &b in p.breakpoints() {
                 let (l, rr) = (p.eval(b - 1e-12), p.eval(b + 1e-12));
-                assert!((l.point - rr.point).length() < 1e-10);
+                assert!((l.point - rr.point).length() < 1e-10, "r={r} b={b}: {} vs {}", l.point, rr.point);
                 assert!((l.normal - rr.normal).length() < 1e-10);
             }
             let (l, rr) = (p.eval(PI - 1e-12), p.eval(-PI));
