@@ -17,7 +17,10 @@ fn main() {
     let d = stationary_distance(&e1, &e2, &pos12, &DistanceOptions::default()).expect("finite poses");
     println!("stationary distance between the specification's ellipses");
     println!("  distance      {:.15}", d.distance);
-    println!("  status        {:?} after {} Newton/Halley iterations, {} evaluations", d.status, d.newton_iterations, d.evaluations);
+    println!(
+        "  status        {:?} after {} Newton/Halley iterations, {} evaluations",
+        d.status, d.newton_iterations, d.evaluations
+    );
     println!("  witness 1     {:?} (world)", pos1 * d.point1);
     println!("  witness 2     {:?} (world)", pos2 * d.point2);
     println!("  normal 1      {:?} (world)", pos1.rotation * d.normal1);
@@ -25,14 +28,26 @@ fn main() {
 
     let hept = RoundedPolygon::regular(7, 1.0, 0.15);
     let ell = Ellipse::new(0.5, 1.5);
-    let m1 = NonlinearRigidMotion::new(Pose::new(Vector::new(-1.85, 0.0), 0.0), Vector::ZERO, Vector::new(2.0, 0.0), 30.0);
+    let m1 = NonlinearRigidMotion::new(
+        Pose::new(Vector::new(-1.85, 0.0), 0.0),
+        Vector::ZERO,
+        Vector::new(2.0, 0.0),
+        30.0,
+    );
     let m2 = NonlinearRigidMotion::constant_position(Pose::IDENTITY);
     let r = time_of_impact(&hept, &m1, &ell, &m2, 0.0, 1.0, &ToiOptions::default()).expect("finite motions");
     let p1 = m1.position_at_time(r.time);
     println!("\nAppendix D: heptagon spinning at 30 rad/s against an ellipse");
     println!("  status        {:?}", r.status);
-    println!("  time          {:.15} s ({:.3} turns)", r.time, 30.0 * r.time / std::f64::consts::TAU);
+    println!(
+        "  time          {:.15} s ({:.3} turns)",
+        r.time,
+        30.0 * r.time / std::f64::consts::TAU
+    );
     println!("  contact point {:?} (world)", p1 * r.point1);
-    println!("  normal        {:?} (world, out of the heptagon)", p1.rotation * r.normal1);
+    println!(
+        "  normal        {:?} (world, out of the heptagon)",
+        p1.rotation * r.normal1
+    );
     println!("  cost          {:?}", r.cost);
 }

@@ -33,7 +33,11 @@ impl ConvexCurve for BallCurve {
     }
     #[inline]
     fn support_jet(&self, m: Vector) -> Option<SupportJet> {
-        Some(SupportJet { point: m * self.radius, radius_of_curvature: self.radius, d_radius_of_curvature: 0.0 })
+        Some(SupportJet {
+            point: m * self.radius,
+            radius_of_curvature: self.radius,
+            d_radius_of_curvature: 0.0,
+        })
     }
     fn is_strictly_convex(&self) -> bool {
         true

@@ -57,7 +57,12 @@ impl CapsuleEllipse {
     pub fn try_new(r1: f64, r2: f64, r3: f64) -> Result<Self, ShapeError> {
         let (r1, r2, r3) = (positive("r1", r1)?, positive("r2", r2)?, positive("r3", r3)?);
         let a = (r2 / r1).atan();
-        Ok(Self { r1, r2, r3, breakpoints: [-FRAC_PI_2, -a, a, FRAC_PI_2] })
+        Ok(Self {
+            r1,
+            r2,
+            r3,
+            breakpoints: [-FRAC_PI_2, -a, a, FRAC_PI_2],
+        })
     }
 
     /// The parameters (r1, r2, r3).
@@ -212,7 +217,13 @@ mod tests {
 
     #[test]
     fn try_new_names_the_bad_parameter() {
-        assert!(matches!(CapsuleEllipse::try_new(0.5, 0.0, 0.8), Err(ShapeError::NotPositive { name: "r2", .. })));
-        assert!(matches!(CapsuleEllipse::try_new(f64::NAN, 1.0, 0.8), Err(ShapeError::NotFinite { name: "r1", .. })));
+        assert!(matches!(
+            CapsuleEllipse::try_new(0.5, 0.0, 0.8),
+            Err(ShapeError::NotPositive { name: "r2", .. })
+        ));
+        assert!(matches!(
+            CapsuleEllipse::try_new(f64::NAN, 1.0, 0.8),
+            Err(ShapeError::NotFinite { name: "r1", .. })
+        ));
     }
 }

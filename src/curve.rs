@@ -132,8 +132,7 @@ pub trait ConvexCurve: Send + Sync + Debug + 'static {
             return j.point;
         }
         let (lo, hi) = self.phi_range_of_normal(n);
-        let p = self.eval(0.5 * (lo + hi)).point;
-        p
+        self.eval(0.5 * (lo + hi)).point
     }
 }
 

@@ -16,7 +16,7 @@
 //! Semantics are parry's: `pos12` is shape 2's pose in shape 1's frame, witnesses and normals are
 //! in each shape's local frame, `distance` is 0 for touching or penetrating shapes, a cast hit's
 //! status is `Converged`, `PenetratingOrWithinTargetDist` or `OutOfIterations`
-//! ([`ToiStatus::to_parry`]).
+//! ([`crate::ToiStatus::to_parry`]).
 
 use crate::curve::ConvexCurve;
 use crate::halfspace::{halfspace_distance, time_of_impact_halfspace};
@@ -82,7 +82,8 @@ fn ccw(mut v: Vec<Vector>) -> Option<Vec<Vector>> {
         area2 += crate::math::cross(v[i], v[(i + 1) % n]);
     }
     let scale = v.iter().fold(0.0f64, |m, p| m.max(p.length_squared()));
-    if !(area2.abs() > 1e-12 * scale) {
+    // Also rejects NaN.
+    if area2.abs().partial_cmp(&(1e-12 * scale)) != Some(core::cmp::Ordering::Greater) {
         return None;
     }
     if area2 < 0.0 {
@@ -107,12 +108,18 @@ pub(crate) fn curve_of(s: &dyn Shape) -> Option<CurveOf<'_>> {
         if (c.segment.b - c.segment.a).length() <= 1e-12 * c.radius {
             return Some(CurveOf::Ball(BallCurve { radius: c.radius })).filter(|_| c.segment.a == Vector::ZERO);
         }
-        return Some(CurveOf::Poly(RoundedPolygon::from_core_unchecked(vec![c.segment.a, c.segment.b], c.radius)));
+        return Some(CurveOf::Poly(RoundedPolygon::from_core_unchecked(
+            vec![c.segment.a, c.segment.b],
+            c.radius,
+        )));
     } else if let Some(sg) = s.as_shape::<Segment>() {
         if (sg.b - sg.a).length_squared() == 0.0 {
             return None;
         }
-        return Some(CurveOf::Poly(RoundedPolygon::from_core_unchecked(vec![sg.a, sg.b], 0.0)));
+        return Some(CurveOf::Poly(RoundedPolygon::from_core_unchecked(
+            vec![sg.a, sg.b],
+            0.0,
+        )));
     } else if let Some(t) = s.as_shape::<Triangle>() {
         (ccw(vec![t.a, t.b, t.c])?, 0.0)
     } else if let Some(t) = s.as_shape::<RoundTriangle>() {
@@ -133,15 +140,28 @@ pub(crate) fn curve_of(s: &dyn Shape) -> Option<CurveOf<'_>> {
 
 fn box_vertices(c: &Cuboid) -> Vec<Vector> {
     let h = c.half_extents;
-    vec![Vector::new(-h.x, -h.y), Vector::new(h.x, -h.y), Vector::new(h.x, h.y), Vector::new(-h.x, h.y)]
+    vec![
+        Vector::new(-h.x, -h.y),
+        Vector::new(h.x, -h.y),
+        Vector::new(h.x, h.y),
+        Vector::new(-h.x, h.y),
+    ]
 }
 
 /// How a pair is answered.
 enum Route<'a> {
     /// Our algorithm; `swapped` when shape 1 plays object2.
-    Curves { c1: CurveOf<'a>, c2: CurveOf<'a>, swapped: bool },
+    Curves {
+        c1: CurveOf<'a>,
+        c2: CurveOf<'a>,
+        swapped: bool,
+    },
     /// Shape `curve` (ours) against a half-space; `curve_first` tells the order.
-    HalfSpace { curve: CurveOf<'a>, hs: &'a HalfSpace, curve_first: bool },
+    HalfSpace {
+        curve: CurveOf<'a>,
+        hs: &'a HalfSpace,
+        curve_first: bool,
+    },
     /// Composite on one side: parry's helpers with this dispatcher.
     Composite,
     /// parry's default dispatcher.
@@ -158,13 +178,21 @@ fn route<'a>(g1: &'a dyn Shape, g2: &'a dyn Shape) -> Route<'a> {
     }
     if let Some(hs) = g2.as_shape::<HalfSpace>() {
         return match curve_of(g1) {
-            Some(curve) => Route::HalfSpace { curve, hs, curve_first: true },
+            Some(curve) => Route::HalfSpace {
+                curve,
+                hs,
+                curve_first: true,
+            },
             None => Route::Parry,
         };
     }
     if let Some(hs) = g1.as_shape::<HalfSpace>() {
         return match curve_of(g2) {
-            Some(curve) => Route::HalfSpace { curve, hs, curve_first: false },
+            Some(curve) => Route::HalfSpace {
+                curve,
+                hs,
+                curve_first: false,
+            },
             None => Route::Parry,
         };
     }
@@ -173,7 +201,11 @@ fn route<'a>(g1: &'a dyn Shape, g2: &'a dyn Shape) -> Route<'a> {
             if c2.get().is_strictly_convex() {
                 Route::Curves { c1, c2, swapped: false }
             } else if c1.get().is_strictly_convex() {
-                Route::Curves { c1: c2, c2: c1, swapped: true }
+                Route::Curves {
+                    c1: c2,
+                    c2: c1,
+                    swapped: true,
+                }
             } else {
                 Route::Parry
             }
@@ -192,7 +224,13 @@ fn pair_distance(
 ) -> Result<StationaryDistance, QueryError> {
     if swapped {
         let r = stationary_distance(c1.get(), c2.get(), &pos12.inverse(), opts)?;
-        Ok(StationaryDistance { point1: r.point2, point2: r.point1, normal1: r.normal2, normal2: r.normal1, ..r })
+        Ok(StationaryDistance {
+            point1: r.point2,
+            point2: r.point1,
+            normal1: r.normal2,
+            normal2: r.normal1,
+            ..r
+        })
     } else {
         stationary_distance(c1.get(), c2.get(), pos12, opts)
     }
@@ -201,10 +239,17 @@ fn pair_distance(
 impl SmoothDispatcher {
     /// The signed distance, witnesses and normals of a pair this dispatcher answers itself, in
     /// the caller's order; `None` when the pair goes to parry.
-    pub fn signed_distance(&self, pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape) -> Option<Result<StationaryDistance, QueryError>> {
+    pub fn signed_distance(
+        &self,
+        pos12: &Pose,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+    ) -> Option<Result<StationaryDistance, QueryError>> {
         match route(g1, g2) {
             Route::Curves { c1, c2, swapped } => Some(pair_distance(&c1, &c2, swapped, pos12, &self.distance_options)),
-            Route::HalfSpace { curve, hs, curve_first } => Some(halfspace_distance(curve.get(), hs, pos12, curve_first)),
+            Route::HalfSpace { curve, hs, curve_first } => {
+                Some(halfspace_distance(curve.get(), hs, pos12, curve_first))
+            }
             _ => None,
         }
     }
@@ -241,7 +286,12 @@ fn toi_to_parry(r: Result<TimeOfImpact, QueryError>) -> Result<Option<ShapeCastH
 }
 
 impl QueryDispatcher for SmoothDispatcher {
-    fn intersection_test(&self, pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape) -> Result<ShapeIntersection, Unsupported> {
+    fn intersection_test(
+        &self,
+        pos12: &Pose,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+    ) -> Result<ShapeIntersection, Unsupported> {
         match route(g1, g2) {
             Route::Parry => DefaultQueryDispatcher.intersection_test(pos12, g1, g2),
             Route::Composite => composite_intersection(self, pos12, g1, g2),
@@ -268,7 +318,13 @@ impl QueryDispatcher for SmoothDispatcher {
         }
     }
 
-    fn contact(&self, pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape, prediction: Real) -> Result<Option<Contact>, Unsupported> {
+    fn contact(
+        &self,
+        pos12: &Pose,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+        prediction: Real,
+    ) -> Result<Option<Contact>, Unsupported> {
         match route(g1, g2) {
             Route::Parry => DefaultQueryDispatcher.contact(pos12, g1, g2, prediction),
             Route::Composite => composite_contact(self, pos12, g1, g2, prediction),
@@ -277,7 +333,9 @@ impl QueryDispatcher for SmoothDispatcher {
                     return Ok(None);
                 }
                 match self.signed_distance(pos12, g1, g2) {
-                    Some(Ok(d)) if d.distance <= prediction => Ok(Some(Contact::new(d.point1, d.point2, d.normal1, d.normal2, d.distance))),
+                    Some(Ok(d)) if d.distance <= prediction => {
+                        Ok(Some(Contact::new(d.point1, d.point2, d.normal1, d.normal2, d.distance)))
+                    }
                     Some(Ok(_)) => Ok(None),
                     _ => Err(Unsupported),
                 }
@@ -285,7 +343,13 @@ impl QueryDispatcher for SmoothDispatcher {
         }
     }
 
-    fn closest_points(&self, pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape, max_dist: Real) -> Result<ClosestPoints, Unsupported> {
+    fn closest_points(
+        &self,
+        pos12: &Pose,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+        max_dist: Real,
+    ) -> Result<ClosestPoints, Unsupported> {
         match route(g1, g2) {
             Route::Parry => DefaultQueryDispatcher.closest_points(pos12, g1, g2, max_dist),
             Route::Composite => composite_closest_points(self, pos12, g1, g2, max_dist),
@@ -338,25 +402,47 @@ impl QueryDispatcher for SmoothDispatcher {
         end_time: Real,
         stop_at_penetration: bool,
     ) -> Result<Option<ShapeCastHit>, Unsupported> {
-        let opts = ToiOptions { stop_at_penetration, ..self.toi_options };
+        let opts = ToiOptions {
+            stop_at_penetration,
+            ..self.toi_options
+        };
         match route(g1, g2) {
             Route::Curves { .. } => self.toi(motion1, g1, motion2, g2, start_time, end_time, &opts),
             Route::HalfSpace { curve, hs, curve_first } => {
                 let r = if curve_first {
                     time_of_impact_halfspace(curve.get(), motion1, hs, motion2, start_time, end_time, &opts)
                 } else {
-                    time_of_impact_halfspace(curve.get(), motion2, hs, motion1, start_time, end_time, &opts).map(|r| TimeOfImpact {
-                        point1: r.point2,
-                        point2: r.point1,
-                        normal1: r.normal2,
-                        normal2: r.normal1,
-                        ..r
+                    time_of_impact_halfspace(curve.get(), motion2, hs, motion1, start_time, end_time, &opts).map(|r| {
+                        TimeOfImpact {
+                            point1: r.point2,
+                            point2: r.point1,
+                            normal1: r.normal2,
+                            normal2: r.normal1,
+                            ..r
+                        }
                     })
                 };
                 toi_to_parry(r)
             }
-            Route::Composite => composite_cast_nonlinear(self, motion1, g1, motion2, g2, start_time, end_time, stop_at_penetration),
-            Route::Parry => DefaultQueryDispatcher.cast_shapes_nonlinear(motion1, g1, motion2, g2, start_time, end_time, stop_at_penetration),
+            Route::Composite => composite_cast_nonlinear(
+                self,
+                motion1,
+                g1,
+                motion2,
+                g2,
+                start_time,
+                end_time,
+                stop_at_penetration,
+            ),
+            Route::Parry => DefaultQueryDispatcher.cast_shapes_nonlinear(
+                motion1,
+                g1,
+                motion2,
+                g2,
+                start_time,
+                end_time,
+                stop_at_penetration,
+            ),
         }
     }
 }
@@ -380,17 +466,31 @@ impl SmoothDispatcher {
     }
 }
 
-fn composite_intersection(d: &SmoothDispatcher, pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape) -> Result<ShapeIntersection, Unsupported> {
+fn composite_intersection(
+    d: &SmoothDispatcher,
+    pos12: &Pose,
+    g1: &dyn Shape,
+    g2: &dyn Shape,
+) -> Result<ShapeIntersection, Unsupported> {
     if let Some(c1) = g1.as_composite_shape() {
-        Ok(query::details::intersection_test_composite_shape_shape(d, pos12, c1, g2))
+        Ok(query::details::intersection_test_composite_shape_shape(
+            d, pos12, c1, g2,
+        ))
     } else if let Some(c2) = g2.as_composite_shape() {
-        Ok(query::details::intersection_test_shape_composite_shape(d, pos12, g1, c2))
+        Ok(query::details::intersection_test_shape_composite_shape(
+            d, pos12, g1, c2,
+        ))
     } else {
         Err(Unsupported)
     }
 }
 
-fn composite_distance(d: &SmoothDispatcher, pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape) -> Result<ShapeDistance, Unsupported> {
+fn composite_distance(
+    d: &SmoothDispatcher,
+    pos12: &Pose,
+    g1: &dyn Shape,
+    g2: &dyn Shape,
+) -> Result<ShapeDistance, Unsupported> {
     if let Some(c1) = g1.as_composite_shape() {
         Ok(query::details::distance_composite_shape_shape(d, pos12, c1, g2))
     } else if let Some(c2) = g2.as_composite_shape() {
@@ -400,21 +500,41 @@ fn composite_distance(d: &SmoothDispatcher, pos12: &Pose, g1: &dyn Shape, g2: &d
     }
 }
 
-fn composite_contact(d: &SmoothDispatcher, pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape, prediction: Real) -> Result<Option<Contact>, Unsupported> {
+fn composite_contact(
+    d: &SmoothDispatcher,
+    pos12: &Pose,
+    g1: &dyn Shape,
+    g2: &dyn Shape,
+    prediction: Real,
+) -> Result<Option<Contact>, Unsupported> {
     if let Some(c1) = g1.as_composite_shape() {
-        Ok(query::details::contact_composite_shape_shape(d, pos12, c1, g2, prediction))
+        Ok(query::details::contact_composite_shape_shape(
+            d, pos12, c1, g2, prediction,
+        ))
     } else if let Some(c2) = g2.as_composite_shape() {
-        Ok(query::details::contact_shape_composite_shape(d, pos12, g1, c2, prediction))
+        Ok(query::details::contact_shape_composite_shape(
+            d, pos12, g1, c2, prediction,
+        ))
     } else {
         Err(Unsupported)
     }
 }
 
-fn composite_closest_points(d: &SmoothDispatcher, pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape, max_dist: Real) -> Result<ClosestPoints, Unsupported> {
+fn composite_closest_points(
+    d: &SmoothDispatcher,
+    pos12: &Pose,
+    g1: &dyn Shape,
+    g2: &dyn Shape,
+    max_dist: Real,
+) -> Result<ClosestPoints, Unsupported> {
     if let Some(c1) = g1.as_composite_shape() {
-        Ok(query::details::closest_points_composite_shape_shape(d, pos12, c1, g2, max_dist))
+        Ok(query::details::closest_points_composite_shape_shape(
+            d, pos12, c1, g2, max_dist,
+        ))
     } else if let Some(c2) = g2.as_composite_shape() {
-        Ok(query::details::closest_points_shape_composite_shape(d, pos12, g1, c2, max_dist))
+        Ok(query::details::closest_points_shape_composite_shape(
+            d, pos12, g1, c2, max_dist,
+        ))
     } else {
         Err(Unsupported)
     }
@@ -429,9 +549,13 @@ fn composite_cast(
     options: ShapeCastOptions,
 ) -> Result<Option<ShapeCastHit>, Unsupported> {
     if let Some(c1) = g1.as_composite_shape() {
-        Ok(query::details::cast_shapes_composite_shape_shape(d, pos12, vel12, c1, g2, options))
+        Ok(query::details::cast_shapes_composite_shape_shape(
+            d, pos12, vel12, c1, g2, options,
+        ))
     } else if let Some(c2) = g2.as_composite_shape() {
-        Ok(query::details::cast_shapes_shape_composite_shape(d, pos12, vel12, g1, c2, options))
+        Ok(query::details::cast_shapes_shape_composite_shape(
+            d, pos12, vel12, g1, c2, options,
+        ))
     } else {
         Err(Unsupported)
     }
@@ -449,9 +573,13 @@ fn composite_cast_nonlinear(
     stop: bool,
 ) -> Result<Option<ShapeCastHit>, Unsupported> {
     if let Some(c1) = g1.as_composite_shape() {
-        Ok(query::details::cast_shapes_nonlinear_composite_shape_shape(d, m1, c1, m2, g2, t0, t1, stop))
+        Ok(query::details::cast_shapes_nonlinear_composite_shape_shape(
+            d, m1, c1, m2, g2, t0, t1, stop,
+        ))
     } else if let Some(c2) = g2.as_composite_shape() {
-        Ok(query::details::cast_shapes_nonlinear_shape_composite_shape(d, m1, g1, m2, c2, t0, t1, stop))
+        Ok(query::details::cast_shapes_nonlinear_shape_composite_shape(
+            d, m1, g1, m2, c2, t0, t1, stop,
+        ))
     } else {
         Err(Unsupported)
     }

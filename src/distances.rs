@@ -4,14 +4,18 @@
 //! Everything is computed in object2's local frame. At time t object1's boundary point and
 //! outward normal there are
 //!
-//!     P(φ, t) = q(t) + R(β(t))·(P₁(φ) − c₁),     N(φ, t) = R(β(t))·N₁(φ),
+//! ```text
+//! P(φ, t) = q(t) + R(β(t))·(P₁(φ) − c₁),     N(φ, t) = R(β(t))·N₁(φ),
+//! ```
 //!
 //! where c₁ is object1's rotation centre (its `local_center`), β = α₁ − α₂ the relative angle
 //! (β' = ω = ω₁ − ω₂) and q(t) = R(−α₂)(C₁ − C₂) + c₂ the position of object1's rotation centre
 //! (C₁, C₂ the world rotation centres, moving linearly). With m = −N and S₂ object2's support
 //! point (eq. 4):
 //!
-//!     d = S₂(m) − P,   F = d·N,   S = d × N,   E = |d|.
+//! ```text
+//! d = S₂(m) − P,   F = d·N,   S = d × N,   E = |d|.
+//! ```
 //!
 //! Derivatives: ψ = angle(m) moves with ∂ψ/∂φ = ω₁(φ) = N₁ × N₁', ∂ψ/∂t = ω; S₂ moves along its
 //! tangent τ = m⊥ with dS₂/dψ = ρ₂τ and d²S₂/dψ² = ρ₂'τ − ρ₂m. q' and q'' follow from
@@ -72,7 +76,10 @@ impl PairFrame {
     /// Rotates a vector of object2's frame into object1's frame.
     #[inline]
     pub fn unrotate(&self, v: Vector) -> Vector {
-        Vector::new(self.cos_b * v.x + self.sin_b * v.y, -self.sin_b * v.x + self.cos_b * v.y)
+        Vector::new(
+            self.cos_b * v.x + self.sin_b * v.y,
+            -self.sin_b * v.x + self.cos_b * v.y,
+        )
     }
 
     /// Maps a point of object1's frame into object2's frame.
@@ -218,8 +225,22 @@ fn rot_jet(fr: &PairFrame, v: Vector, v_p: Vector, v_pp: Vector) -> JetVec {
     let a_pt = perp(a_p) * w;
     let a_tt = -a * (w * w);
     JetVec {
-        x: Jet2 { v: a.x, p: a_p.x, t: a_t.x, pp: a_pp.x, pt: a_pt.x, tt: a_tt.x },
-        y: Jet2 { v: a.y, p: a_p.y, t: a_t.y, pp: a_pp.y, pt: a_pt.y, tt: a_tt.y },
+        x: Jet2 {
+            v: a.x,
+            p: a_p.x,
+            t: a_t.x,
+            pp: a_pp.x,
+            pt: a_pt.x,
+            tt: a_tt.x,
+        },
+        y: Jet2 {
+            v: a.y,
+            p: a_p.y,
+            t: a_t.y,
+            pp: a_pp.y,
+            pt: a_pt.y,
+            tt: a_tt.y,
+        },
     }
 }
 
@@ -257,8 +278,22 @@ pub fn eval_pair_at(cp: CurvePoint, obj2: &dyn ConvexCurve, fr: &PairFrame) -> O
     let s_pt = k * (w * om);
     let s_tt = k * (om * om);
     let s2 = JetVec {
-        x: Jet2 { v: sj.point.x, p: s_p.x, t: s_t.x, pp: s_pp.x, pt: s_pt.x, tt: s_tt.x },
-        y: Jet2 { v: sj.point.y, p: s_p.y, t: s_t.y, pp: s_pp.y, pt: s_pt.y, tt: s_tt.y },
+        x: Jet2 {
+            v: sj.point.x,
+            p: s_p.x,
+            t: s_t.x,
+            pp: s_pp.x,
+            pt: s_pt.x,
+            tt: s_tt.x,
+        },
+        y: Jet2 {
+            v: sj.point.y,
+            p: s_p.y,
+            t: s_t.y,
+            pp: s_pp.y,
+            pt: s_pt.y,
+            tt: s_tt.y,
+        },
     };
     let d = s2 - p;
     let fwd = d.dot(n);
@@ -286,7 +321,14 @@ mod tests {
     }
 
     /// Brute-force F and S at (φ, t) from parry's `position_at_time` (a second route).
-    fn brute(o1: &dyn ConvexCurve, o2: &dyn ConvexCurve, m1: &NonlinearRigidMotion, m2: &NonlinearRigidMotion, phi: f64, t: f64) -> (f64, f64) {
+    fn brute(
+        o1: &dyn ConvexCurve,
+        o2: &dyn ConvexCurve,
+        m1: &NonlinearRigidMotion,
+        m2: &NonlinearRigidMotion,
+        phi: f64,
+        t: f64,
+    ) -> (f64, f64) {
         let (p1, p2) = (m1.position_at_time(t), m2.position_at_time(t));
         let cp = o1.eval(phi);
         let pw = p1 * cp.point;
@@ -311,7 +353,10 @@ mod tests {
             for t in [0.0, 0.37, 1.1] {
                 let j = eval_pair(o1, o2, &rel.frame(t), phi).unwrap();
                 let (f, s) = brute(o1, o2, &m1, &m2, phi, t);
-                assert!((j.fwd.v - f).abs() < 1e-12 && (j.side.v - s).abs() < 1e-12, "value at φ={phi}, t={t}");
+                assert!(
+                    (j.fwd.v - f).abs() < 1e-12 && (j.side.v - s).abs() < 1e-12,
+                    "value at φ={phi}, t={t}"
+                );
                 let h = 1e-5;
                 let fd = |dp: f64, dt: f64| brute(o1, o2, &m1, &m2, phi + dp, t + dt);
                 let (fp, sp) = fd(h, 0.0);
@@ -320,21 +365,47 @@ mod tests {
                 let (ftm, stm) = fd(0.0, -h);
                 let tol1 = 1e-7;
                 let rel = |x: f64| 1.0 + x.abs();
-                assert!((j.fwd.p - (fp - fm) / (2.0 * h)).abs() < tol1 * rel(j.fwd.p), "F_φ φ={phi} t={t}");
+                assert!(
+                    (j.fwd.p - (fp - fm) / (2.0 * h)).abs() < tol1 * rel(j.fwd.p),
+                    "F_φ φ={phi} t={t}"
+                );
                 assert!((j.side.p - (sp - sm) / (2.0 * h)).abs() < tol1 * rel(j.side.p), "S_φ");
                 assert!((j.fwd.t - (ftp - ftm) / (2.0 * h)).abs() < tol1 * rel(j.fwd.t), "F_t");
-                assert!((j.side.t - (stp - stm) / (2.0 * h)).abs() < tol1 * rel(j.side.t), "S_t {} vs {} phi={phi} t={t}", j.side.t, (stp - stm) / (2.0 * h));
+                assert!(
+                    (j.side.t - (stp - stm) / (2.0 * h)).abs() < tol1 * rel(j.side.t),
+                    "S_t {} vs {} phi={phi} t={t}",
+                    j.side.t,
+                    (stp - stm) / (2.0 * h)
+                );
                 let tol2 = 1e-4;
-                assert!((j.fwd.pp - (fp - 2.0 * f + fm) / (h * h)).abs() < tol2 * rel(j.fwd.pp), "F_φφ");
-                assert!((j.side.pp - (sp - 2.0 * s + sm) / (h * h)).abs() < tol2 * rel(j.side.pp), "S_φφ");
-                assert!((j.fwd.tt - (ftp - 2.0 * f + ftm) / (h * h)).abs() < tol2 * rel(j.fwd.tt), "F_tt");
-                assert!((j.side.tt - (stp - 2.0 * s + stm) / (h * h)).abs() < tol2 * rel(j.side.tt), "S_tt");
+                assert!(
+                    (j.fwd.pp - (fp - 2.0 * f + fm) / (h * h)).abs() < tol2 * rel(j.fwd.pp),
+                    "F_φφ"
+                );
+                assert!(
+                    (j.side.pp - (sp - 2.0 * s + sm) / (h * h)).abs() < tol2 * rel(j.side.pp),
+                    "S_φφ"
+                );
+                assert!(
+                    (j.fwd.tt - (ftp - 2.0 * f + ftm) / (h * h)).abs() < tol2 * rel(j.fwd.tt),
+                    "F_tt"
+                );
+                assert!(
+                    (j.side.tt - (stp - 2.0 * s + stm) / (h * h)).abs() < tol2 * rel(j.side.tt),
+                    "S_tt"
+                );
                 let (fpp, spp) = fd(h, h);
                 let (fpm, spm) = fd(h, -h);
                 let (fmp, smp) = fd(-h, h);
                 let (fmm, smm) = fd(-h, -h);
-                assert!((j.fwd.pt - (fpp - fpm - fmp + fmm) / (4.0 * h * h)).abs() < tol2 * rel(j.fwd.pt), "F_φt");
-                assert!((j.side.pt - (spp - spm - smp + smm) / (4.0 * h * h)).abs() < tol2 * rel(j.side.pt), "S_φt");
+                assert!(
+                    (j.fwd.pt - (fpp - fpm - fmp + fmm) / (4.0 * h * h)).abs() < tol2 * rel(j.fwd.pt),
+                    "F_φt"
+                );
+                assert!(
+                    (j.side.pt - (spp - spm - smp + smm) / (4.0 * h * h)).abs() < tol2 * rel(j.side.pt),
+                    "S_φt"
+                );
                 // Identity ∂F/∂φ = −ω₁ S (DESIGN § 2).
                 let w = j.curve1.normal_turn_rate();
                 assert!((j.fwd.p + w * j.side.v).abs() < 1e-12 * (1.0 + j.fwd.p.abs()));

@@ -3,7 +3,9 @@
 //! φ is the angle of the outward normal N = (cos φ, sin φ). With h(φ) = √(a² cos² φ + b² sin² φ)
 //! (the support function), the boundary point is eq. 4 applied to N:
 //!
-//!     P(φ) = (a² cos φ, b² sin φ) / h(φ),
+//! ```text
+//! P(φ) = (a² cos φ, b² sin φ) / h(φ),
+//! ```
 //!
 //! and the radius of curvature is ρ(φ) = a² b² / h³. The eccentric anomaly E of eq. 1 and the
 //! normal angle are related by tan φ = (a/b) tan E ([`Ellipse::normal_angle_from_eccentric`],
@@ -41,7 +43,10 @@ impl Ellipse {
 
     /// An ellipse with semi-axes `half_x`, `half_y`, or why not.
     pub fn try_new(half_x: f64, half_y: f64) -> Result<Self, ShapeError> {
-        Ok(Self { half_x: positive("half_x", half_x)?, half_y: positive("half_y", half_y)? })
+        Ok(Self {
+            half_x: positive("half_x", half_x)?,
+            half_y: positive("half_y", half_y)?,
+        })
     }
 
     /// The normal angle φ at eccentric anomaly E: φ = atan2(a sin E, b cos E).
@@ -178,9 +183,18 @@ mod tests {
 
     #[test]
     fn try_new_rejects_bad_semi_axes() {
-        assert!(matches!(Ellipse::try_new(0.0, 1.0), Err(ShapeError::NotPositive { name: "half_x", .. })));
-        assert!(matches!(Ellipse::try_new(1.0, f64::NAN), Err(ShapeError::NotFinite { name: "half_y", .. })));
-        assert!(matches!(Ellipse::try_new(-1.0, 1.0), Err(ShapeError::NotPositive { .. })));
+        assert!(matches!(
+            Ellipse::try_new(0.0, 1.0),
+            Err(ShapeError::NotPositive { name: "half_x", .. })
+        ));
+        assert!(matches!(
+            Ellipse::try_new(1.0, f64::NAN),
+            Err(ShapeError::NotFinite { name: "half_y", .. })
+        ));
+        assert!(matches!(
+            Ellipse::try_new(-1.0, 1.0),
+            Err(ShapeError::NotPositive { .. })
+        ));
         assert!(Ellipse::try_new(f64::INFINITY, 1.0).is_err());
     }
 

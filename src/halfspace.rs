@@ -11,7 +11,9 @@
 //! the boundary. For each body point G(x, t) = n(t)·ΔC(t) + n·R(α_c − α_h)(x − c_c) + n·c_h, so
 //! |G''| ≤ M = 2|ω_h||ΔV| + ω_h²·max|ΔC| + (ω_c − ω_h)²·r_c (r_c bounds |x − c_c|), and
 //!
-//!     D(tₖ + h) ≥ Dₖ + V_min·h − M h²/2,
+//! ```text
+//! D(tₖ + h) ≥ Dₖ + V_min·h − M h²/2,
+//! ```
 //!
 //! where V_min = min over the shape of ∂G/∂t(x, tₖ). ∂G/∂t is affine in x, with gradient
 //! (ω_h − ω_c)·n⊥, so V_min is attained at the support point in direction −(ω_h − ω_c)·n⊥ and is
@@ -29,7 +31,12 @@ use parry2d_f64::shape::HalfSpace;
 
 /// Signed distance between `curve` and the half-space `hs`; `pos12` is shape 2's pose in shape 1's
 /// frame and `curve_first` tells whether shape 1 is the curve. Results in the caller's order.
-pub fn halfspace_distance(curve: &dyn ConvexCurve, hs: &HalfSpace, pos12: &Pose, curve_first: bool) -> Result<StationaryDistance, QueryError> {
+pub fn halfspace_distance(
+    curve: &dyn ConvexCurve,
+    hs: &HalfSpace,
+    pos12: &Pose,
+    curve_first: bool,
+) -> Result<StationaryDistance, QueryError> {
     if !pos12.is_finite() {
         return Err(QueryError::NonFinite);
     }
@@ -45,7 +52,11 @@ pub fn halfspace_distance(curve: &dyn ConvexCurve, hs: &HalfSpace, pos12: &Pose,
         return Err(QueryError::Degenerate);
     }
     let on_plane = pos_hc.inverse_transform_point(p - n * dist);
-    let status = if dist > 0.0 { DistanceStatus::Separated } else { DistanceStatus::Penetrating };
+    let status = if dist > 0.0 {
+        DistanceStatus::Separated
+    } else {
+        DistanceStatus::Penetrating
+    };
     let base = StationaryDistance {
         distance: dist,
         phi,
@@ -60,7 +71,13 @@ pub fn halfspace_distance(curve: &dyn ConvexCurve, hs: &HalfSpace, pos12: &Pose,
     Ok(if curve_first {
         base
     } else {
-        StationaryDistance { point1: on_plane, point2: p, normal1: hs.normal, normal2: -n, ..base }
+        StationaryDistance {
+            point1: on_plane,
+            point2: p,
+            normal1: hs.normal,
+            normal2: -n,
+            ..base
+        }
     })
 }
 
@@ -79,7 +96,13 @@ struct Sample {
     o_c: Vector,
 }
 
-fn sample(curve: &dyn ConvexCurve, mc: &NonlinearRigidMotion, hs: &HalfSpace, mh: &NonlinearRigidMotion, t: f64) -> Sample {
+fn sample(
+    curve: &dyn ConvexCurve,
+    mc: &NonlinearRigidMotion,
+    hs: &HalfSpace,
+    mh: &NonlinearRigidMotion,
+    t: f64,
+) -> Sample {
     let pc = mc.position_at_time(t);
     let ph = mh.position_at_time(t);
     let nw = ph.rotation.transform_vector(hs.normal);
@@ -108,7 +131,15 @@ fn sample(curve: &dyn ConvexCurve, mc: &NonlinearRigidMotion, hs: &HalfSpace, mh
     } else {
         dg
     };
-    Sample { t, dist, p, dg, v_min: v_min.min(dg), n_c, o_c: pc.inverse_transform_point(ow) }
+    Sample {
+        t,
+        dist,
+        p,
+        dg,
+        v_min: v_min.min(dg),
+        n_c,
+        o_c: pc.inverse_transform_point(ow),
+    }
 }
 
 /// The time of impact of `curve` moving by `mc` against the half-space `hs` moving by `mh`,
@@ -122,7 +153,9 @@ pub fn time_of_impact_halfspace(
     t1: f64,
     opts: &ToiOptions,
 ) -> Result<TimeOfImpact, QueryError> {
-    let finite = |m: &NonlinearRigidMotion| m.start.is_finite() && m.local_center.is_finite() && m.linvel.is_finite() && m.angvel.is_finite();
+    let finite = |m: &NonlinearRigidMotion| {
+        m.start.is_finite() && m.local_center.is_finite() && m.linvel.is_finite() && m.angvel.is_finite()
+    };
     if !(finite(mc) && finite(mh) && t0.is_finite() && t1.is_finite() && hs.normal.is_finite()) {
         return Err(QueryError::NonFinite);
     }
@@ -238,7 +271,12 @@ mod tests {
     fn ellipse_falls_on_ground_at_closed_form_time() {
         let e = Ellipse::new(0.5, 0.2);
         // Ellipse at height 2 falling at 1 m/s, no spin: contact when its bottom (y − 0.2) reaches 0.
-        let mc = NonlinearRigidMotion::new(Pose::new(Vector::new(0.0, 2.0), 0.0), Vector::ZERO, Vector::new(0.0, -1.0), 0.0);
+        let mc = NonlinearRigidMotion::new(
+            Pose::new(Vector::new(0.0, 2.0), 0.0),
+            Vector::ZERO,
+            Vector::new(0.0, -1.0),
+            0.0,
+        );
         let mh = NonlinearRigidMotion::identity();
         let hs = HalfSpace::new(Vector::Y);
         let r = time_of_impact_halfspace(&e, &mc, &hs, &mh, 0.0, 5.0, &ToiOptions::default()).unwrap();
@@ -253,9 +291,23 @@ mod tests {
         // θ = π/4 − acos(0.9).
         let p = RoundedPolygon::regular(4, 1.0, 0.0);
         let w = 10.0;
-        let mc = NonlinearRigidMotion::new(Pose::new(Vector::new(0.0, 0.9), core::f64::consts::FRAC_PI_4), Vector::ZERO, Vector::ZERO, w);
+        let mc = NonlinearRigidMotion::new(
+            Pose::new(Vector::new(0.0, 0.9), core::f64::consts::FRAC_PI_4),
+            Vector::ZERO,
+            Vector::ZERO,
+            w,
+        );
         let hs = HalfSpace::new(Vector::Y);
-        let r = time_of_impact_halfspace(&p, &mc, &hs, &NonlinearRigidMotion::identity(), 0.0, 1.0, &ToiOptions::default()).unwrap();
+        let r = time_of_impact_halfspace(
+            &p,
+            &mc,
+            &hs,
+            &NonlinearRigidMotion::identity(),
+            0.0,
+            1.0,
+            &ToiOptions::default(),
+        )
+        .unwrap();
         assert_eq!(r.status, ToiStatus::Hit);
         let exact = (core::f64::consts::FRAC_PI_4 - 0.9f64.acos()) / w;
         assert!((r.time - exact).abs() < 1e-10, "{} vs {exact}", r.time);

@@ -75,7 +75,11 @@ impl Dual2 {
     /// Multiplies by a constant.
     #[inline]
     pub fn scale(self, k: f64) -> Self {
-        Self { v: self.v * k, d: self.d * k, dd: self.dd * k }
+        Self {
+            v: self.v * k,
+            d: self.d * k,
+            dd: self.dd * k,
+        }
     }
 }
 
@@ -83,21 +87,33 @@ impl Add for Dual2 {
     type Output = Self;
     #[inline]
     fn add(self, o: Self) -> Self {
-        Self { v: self.v + o.v, d: self.d + o.d, dd: self.dd + o.dd }
+        Self {
+            v: self.v + o.v,
+            d: self.d + o.d,
+            dd: self.dd + o.dd,
+        }
     }
 }
 impl Sub for Dual2 {
     type Output = Self;
     #[inline]
     fn sub(self, o: Self) -> Self {
-        Self { v: self.v - o.v, d: self.d - o.d, dd: self.dd - o.dd }
+        Self {
+            v: self.v - o.v,
+            d: self.d - o.d,
+            dd: self.dd - o.dd,
+        }
     }
 }
 impl Neg for Dual2 {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
-        Self { v: -self.v, d: -self.d, dd: -self.dd }
+        Self {
+            v: -self.v,
+            d: -self.d,
+            dd: -self.dd,
+        }
     }
 }
 impl Mul for Dual2 {
@@ -115,7 +131,8 @@ impl Div for Dual2 {
     type Output = Self;
     #[inline]
     fn div(self, o: Self) -> Self {
-        self * o.recip()
+        let r = o.recip();
+        Mul::mul(self, r)
     }
 }
 
@@ -140,7 +157,14 @@ impl Jet2 {
     /// A constant.
     #[inline]
     pub const fn cst(v: f64) -> Self {
-        Self { v, p: 0.0, t: 0.0, pp: 0.0, pt: 0.0, tt: 0.0 }
+        Self {
+            v,
+            p: 0.0,
+            t: 0.0,
+            pp: 0.0,
+            pt: 0.0,
+            tt: 0.0,
+        }
     }
     /// Multiplies by a constant.
     #[inline]
@@ -262,14 +286,20 @@ impl Add for JetVec {
     type Output = Self;
     #[inline]
     fn add(self, o: Self) -> Self {
-        Self { x: self.x + o.x, y: self.y + o.y }
+        Self {
+            x: self.x + o.x,
+            y: self.y + o.y,
+        }
     }
 }
 impl Sub for JetVec {
     type Output = Self;
     #[inline]
     fn sub(self, o: Self) -> Self {
-        Self { x: self.x - o.x, y: self.y - o.y }
+        Self {
+            x: self.x - o.x,
+            y: self.y - o.y,
+        }
     }
 }
 
@@ -296,9 +326,20 @@ mod tests {
     fn jet2_product_rule_gives_mixed_partials() {
         // f(φ, t) = φ² t³ at (2, 3): value 108, f_φ = 2φt³ = 108, f_t = 3φ²t² = 108,
         // f_φφ = 2t³ = 54, f_φt = 6φt² = 108, f_tt = 6φ²t = 72.
-        let phi = Jet2 { v: 2.0, p: 1.0, ..Jet2::cst(0.0) };
-        let t = Jet2 { v: 3.0, t: 1.0, ..Jet2::cst(0.0) };
+        let phi = Jet2 {
+            v: 2.0,
+            p: 1.0,
+            ..Jet2::cst(0.0)
+        };
+        let t = Jet2 {
+            v: 3.0,
+            t: 1.0,
+            ..Jet2::cst(0.0)
+        };
         let f = phi * phi * t * t * t;
-        assert_eq!([f.v, f.p, f.t, f.pp, f.pt, f.tt], [108.0, 108.0, 108.0, 54.0, 108.0, 72.0]);
+        assert_eq!(
+            [f.v, f.p, f.t, f.pp, f.pt, f.tt],
+            [108.0, 108.0, 108.0, 54.0, 108.0, 72.0]
+        );
     }
 }

@@ -1579,7 +1579,10 @@ mod tests {
                     let p = ellipse_closest_point(a, b, x);
                     // On the ellipse.
                     let g = (p.x / a).powi(2) + (p.y / b).powi(2) - 1.0;
-                    assert!(g.abs() < 1e-12, "off the ellipse: {g} a={a} b={b} x={x} p={p}");
+                    assert!(
+                        g.abs() < 1e-12,
+                        "off the ellipse: {g} a={a} b={b} x={x} p={p}"
+                    );
                     // x − p along the normal at p.
                     let n = e.normal_at_point(p);
                     let d = x - p;

@@ -90,7 +90,10 @@ impl RoundedPolygon {
             return Err(ShapeError::VertexNotFinite { index });
         }
         let n = vertices.len();
-        let size = vertices.iter().fold(0.0f64, |m, v| m.max(v.length())).max(f64::MIN_POSITIVE);
+        let size = vertices
+            .iter()
+            .fold(0.0f64, |m, v| m.max(v.length()))
+            .max(f64::MIN_POSITIVE);
         for i in 0..n {
             let j = (i + 1) % n;
             if (vertices[j] - vertices[i]).length() <= 1e-12 * size {
@@ -133,8 +136,9 @@ impl RoundedPolygon {
         if sides < 3 {
             return Err(ShapeError::TooFewVertices { count: sides });
         }
-        let v: Vec<Vector> =
-            (0..sides).map(|i| unit(2.0 * PI * i as f64 / sides as f64) * r).collect();
+        let v: Vec<Vector> = (0..sides)
+            .map(|i| unit(2.0 * PI * i as f64 / sides as f64) * r)
+            .collect();
         Self::try_new(&v, corner_radius)
     }
 
@@ -167,7 +171,16 @@ impl RoundedPolygon {
         }
         piece_starts.push(PI);
         let bounding_radius = vertices.iter().fold(0.0f64, |m, v| m.max(v.length())) + radius;
-        Self { vertices, radius, edge_normals, edge_lengths, piece_starts, k, corner_scale, bounding_radius }
+        Self {
+            vertices,
+            radius,
+            edge_normals,
+            edge_lengths,
+            piece_starts,
+            k,
+            corner_scale,
+            bounding_radius,
+        }
     }
 
     /// The core polygon's vertices (counter-clockwise).
@@ -189,7 +202,10 @@ impl RoundedPolygon {
     /// take `.inner_shape`). `None` only for a degenerate core (fewer than three vertices).
     pub fn to_parry(&self) -> Option<parry2d_f64::shape::RoundConvexPolygon> {
         let poly = parry2d_f64::shape::ConvexPolygon::from_convex_polyline(self.vertices.clone())?;
-        Some(parry2d_f64::shape::RoundShape { inner_shape: poly, border_radius: self.radius })
+        Some(parry2d_f64::shape::RoundShape {
+            inner_shape: poly,
+            border_radius: self.radius,
+        })
     }
 
     /// Index of the piece containing φ (even: corner i = idx/2, odd: edge i = idx/2).
@@ -209,7 +225,7 @@ impl ConvexCurve for RoundedPolygon {
         let piece = self.piece_of(phi);
         let i = piece / 2;
         let u = phi - self.piece_starts[piece];
-        if piece % 2 == 0 {
+        if piece.is_multiple_of(2) {
             let w = 1.0 / (self.k * self.corner_scale);
             let e_prev = self.edge_normals[(i + n - 1) % n];
             let theta = u * w;
@@ -312,7 +328,12 @@ mod tests {
             let p = RoundedPolygon::regular(5, 1.0, r);
             for &b in p.breakpoints() {
                 let (l, rr) = (p.eval(b - 1e-12), p.eval(b + 1e-12));
-                assert!((l.point - rr.point).length() < 1e-10, "r={r} b={b}: {} vs {}", l.point, rr.point);
+                assert!(
+                    (l.point - rr.point).length() < 1e-10,
+                    "r={r} b={b}: {} vs {}",
+                    l.point,
+                    rr.point
+                );
                 assert!((l.normal - rr.normal).length() < 1e-10);
             }
             let (l, rr) = (p.eval(PI - 1e-12), p.eval(-PI));
@@ -342,23 +363,55 @@ mod tests {
 
     #[test]
     fn try_new_rejects_bad_vertex_lists() {
-        let sq = [Vector::new(0.0, 0.0), Vector::new(1.0, 0.0), Vector::new(1.0, 1.0), Vector::new(0.0, 1.0)];
+        let sq = [
+            Vector::new(0.0, 0.0),
+            Vector::new(1.0, 0.0),
+            Vector::new(1.0, 1.0),
+            Vector::new(0.0, 1.0),
+        ];
         assert!(RoundedPolygon::try_new(&sq, 0.1).is_ok());
         let cw: Vec<Vector> = sq.iter().rev().copied().collect();
-        assert!(matches!(RoundedPolygon::try_new(&cw, 0.1), Err(ShapeError::NotConvex { .. })));
-        assert!(matches!(RoundedPolygon::try_new(&sq[..2], 0.1), Err(ShapeError::TooFewVertices { count: 2 })));
-        assert!(matches!(RoundedPolygon::try_new(&sq, -0.1), Err(ShapeError::Negative { .. })));
+        assert!(matches!(
+            RoundedPolygon::try_new(&cw, 0.1),
+            Err(ShapeError::NotConvex { .. })
+        ));
+        assert!(matches!(
+            RoundedPolygon::try_new(&sq[..2], 0.1),
+            Err(ShapeError::TooFewVertices { count: 2 })
+        ));
+        assert!(matches!(
+            RoundedPolygon::try_new(&sq, -0.1),
+            Err(ShapeError::Negative { .. })
+        ));
         let rep = [sq[0], sq[1], sq[1], sq[2]];
-        assert!(matches!(RoundedPolygon::try_new(&rep, 0.0), Err(ShapeError::RepeatedVertex { .. })));
+        assert!(matches!(
+            RoundedPolygon::try_new(&rep, 0.0),
+            Err(ShapeError::RepeatedVertex { .. })
+        ));
         let nan = [sq[0], Vector::new(f64::NAN, 0.0), sq[2]];
-        assert!(matches!(RoundedPolygon::try_new(&nan, 0.0), Err(ShapeError::VertexNotFinite { index: 1 })));
+        assert!(matches!(
+            RoundedPolygon::try_new(&nan, 0.0),
+            Err(ShapeError::VertexNotFinite { index: 1 })
+        ));
         let reflex = [sq[0], sq[1], Vector::new(0.5, 0.2), sq[3]];
-        assert!(matches!(RoundedPolygon::try_new(&reflex, 0.0), Err(ShapeError::NotConvex { .. })));
+        assert!(matches!(
+            RoundedPolygon::try_new(&reflex, 0.0),
+            Err(ShapeError::NotConvex { .. })
+        ));
         // A pentagram's vertices turn convexly at every corner but wind twice.
         let star: Vec<Vector> = (0..5).map(|i| unit(4.0 * PI * i as f64 / 5.0)).collect();
         assert!(RoundedPolygon::try_new(&star, 0.0).is_err());
-        assert!(matches!(RoundedPolygon::try_regular(2, 1.0, 0.0), Err(ShapeError::TooFewVertices { .. })));
-        assert!(matches!(RoundedPolygon::try_regular(5, 0.0, 0.0), Err(ShapeError::NotPositive { name: "circumradius", .. })));
+        assert!(matches!(
+            RoundedPolygon::try_regular(2, 1.0, 0.0),
+            Err(ShapeError::TooFewVertices { .. })
+        ));
+        assert!(matches!(
+            RoundedPolygon::try_regular(5, 0.0, 0.0),
+            Err(ShapeError::NotPositive {
+                name: "circumradius",
+                ..
+            })
+        ));
     }
 
     #[test]

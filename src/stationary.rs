@@ -44,7 +44,12 @@ pub struct DistanceOptions {
 
 impl Default for DistanceOptions {
     fn default() -> Self {
-        Self { side_tolerance: 1e-10, distance_tolerance: 1e-12, max_local_iterations: 100, max_evaluations: 4000 }
+        Self {
+            side_tolerance: 1e-10,
+            distance_tolerance: 1e-12,
+            max_local_iterations: 100,
+            max_evaluations: 4000,
+        }
     }
 }
 
@@ -135,7 +140,11 @@ impl<'a> Solver<'a> {
         }
         // Grow a bracket: S < 0 ⇒ root ahead; S > 0 ⇒ root behind.
         let dir = if j0.side.v < 0.0 { 1.0 } else { -1.0 };
-        let mut step = if j0.side.p > 0.0 { (j0.side.v.abs() / j0.side.p).clamp(1e-6, 0.5) } else { 0.1 };
+        let mut step = if j0.side.p > 0.0 {
+            (j0.side.v.abs() / j0.side.p).clamp(1e-6, 0.5)
+        } else {
+            0.1
+        };
         let (mut a, mut ja) = (phi0, j0);
         let mut travelled = 0.0;
         loop {
@@ -156,7 +165,13 @@ impl<'a> Solver<'a> {
     }
 
     /// Safeguarded Halley on S inside [lo, hi] with S(lo) ≤ 0 ≤ S(hi).
-    pub fn bracketed_root(&mut self, mut lo: f64, mut jlo: PairJet, mut hi: f64, mut jhi: PairJet) -> Option<(f64, PairJet)> {
+    pub fn bracketed_root(
+        &mut self,
+        mut lo: f64,
+        mut jlo: PairJet,
+        mut hi: f64,
+        mut jhi: PairJet,
+    ) -> Option<(f64, PairJet)> {
         if jlo.side.v.abs() <= self.side_tol {
             return Some((lo, jlo));
         }
@@ -164,14 +179,22 @@ impl<'a> Solver<'a> {
             return Some((hi, jhi));
         }
         // Start from the end with the smaller |S|.
-        let (mut x, mut jx) = if jlo.side.v.abs() < jhi.side.v.abs() { (lo, jlo) } else { (hi, jhi) };
+        let (mut x, mut jx) = if jlo.side.v.abs() < jhi.side.v.abs() {
+            (lo, jlo)
+        } else {
+            (hi, jhi)
+        };
         let mut last_width = hi - lo;
         for it in 0..self.max_iter {
             let (s, s1, s2) = (jx.side.v, jx.side.p, jx.side.pp);
             let mut cand = f64::NAN;
             if s1 > 0.0 {
                 let denom = 2.0 * s1 * s1 - s * s2;
-                cand = if denom > 0.0 { x - 2.0 * s * s1 / denom } else { x - s / s1 };
+                cand = if denom > 0.0 {
+                    x - 2.0 * s * s1 / denom
+                } else {
+                    x - s / s1
+                };
             }
             let width = hi - lo;
             let use_bisect = !(cand > lo && cand < hi) || (it > 1 && width > 0.5 * last_width);
@@ -282,7 +305,11 @@ pub(crate) fn stationary_in_frame(
     let mut prev = first;
     for k in 1..=SEEDS {
         let th = theta_start + 2.0 * PI * k as f64 / SEEDS as f64;
-        let node = if k == SEEDS { Node { theta: th, ..first } } else { node_at(&mut sv, th).ok_or(QueryError::Degenerate)? };
+        let node = if k == SEEDS {
+            Node { theta: th, ..first }
+        } else {
+            node_at(&mut sv, th).ok_or(QueryError::Degenerate)?
+        };
         consider(&mut best, node.phi, &node.jet);
         stack.push((prev, node));
         prev = node;
@@ -325,12 +352,16 @@ pub(crate) fn stationary_in_frame(
         stack.push((mid, b));
     }
     let (phi, j) = best.ok_or(QueryError::Degenerate)?;
-    let status = if j.fwd.v > 0.0 && status != DistanceStatus::OutOfIterations { DistanceStatus::Separated } else { status };
+    let status = if j.fwd.v > 0.0 && status != DistanceStatus::OutOfIterations {
+        DistanceStatus::Separated
+    } else {
+        status
+    };
     Ok(finish(&sv, phi, &j, status))
 }
 
 fn consider(best: &mut Option<(f64, PairJet)>, phi: f64, j: &PairJet) {
-    if best.map_or(true, |(_, b)| j.fwd.v > b.fwd.v) {
+    if best.is_none_or(|(_, b)| j.fwd.v > b.fwd.v) {
         *best = Some((phi, *j));
     }
 }
@@ -356,7 +387,6 @@ fn envelope_max(fa: f64, ga: f64, fb: f64, gb: f64, m: f64, delta: f64) -> f64 {
 }
 
 fn finish(sv: &Solver, phi: f64, j: &PairJet, status: DistanceStatus) -> StationaryDistance {
-    let fr = &sv.frame;
     StationaryDistance {
         distance: j.fwd.v,
         phi,
@@ -367,13 +397,6 @@ fn finish(sv: &Solver, phi: f64, j: &PairJet, status: DistanceStatus) -> Station
         status,
         newton_iterations: sv.newton,
         evaluations: sv.evaluations,
-    }
-    .with_frame(fr)
-}
-
-impl StationaryDistance {
-    fn with_frame(self, _fr: &PairFrame) -> Self {
-        self
     }
 }
 
@@ -391,7 +414,7 @@ mod tests {
         let (a, b) = (BallCurve { radius: 0.7 }, BallCurve { radius: 0.4 });
         for (x, y) in [(2.0, 0.3), (0.5, -0.2), (-1.0, 0.05), (0.0, 0.3)] {
             let r = d(&a, &b, x, y, 0.4);
-            let exact = (x * x + y * y as f64).sqrt() - 1.1;
+            let exact = (x * x + y * y).sqrt() - 1.1;
             assert!((r.distance - exact).abs() < 1e-12, "{x},{y}: {} vs {exact}", r.distance);
         }
     }
@@ -410,16 +433,28 @@ mod tests {
 
     #[test]
     fn disc_against_a_box_face_matches_the_closed_form() {
-        let sq = RoundedPolygon::regular(4, 2f64.sqrt(), 0.0).clone();
-        // regular(4, √2) has vertices on the axes: rotate by π/4 through pos12 instead: use a
-        // square built from vertices.
-        let _ = sq;
-        let bx = RoundedPolygon::new(&[Vector::new(-1.0, -1.0), Vector::new(1.0, -1.0), Vector::new(1.0, 1.0), Vector::new(-1.0, 1.0)], 0.0);
+        let bx = RoundedPolygon::new(
+            &[
+                Vector::new(-1.0, -1.0),
+                Vector::new(1.0, -1.0),
+                Vector::new(1.0, 1.0),
+                Vector::new(-1.0, 1.0),
+            ],
+            0.0,
+        );
         let ball = BallCurve { radius: 0.5 };
         for (x, y) in [(2.0, 0.3), (1.2, -0.9), (1.4, 0.0), (0.2, 1.3)] {
             let r = d(&bx, &ball, x, y, 0.0);
-            let exact = if x.abs() > y.abs() { x.abs() - 1.5 } else { y.abs() - 1.5 };
-            assert!((r.distance - exact).abs() < 1e-12, "({x},{y}): {} vs {exact}", r.distance);
+            let exact = if x.abs() > y.abs() {
+                x.abs() - 1.5
+            } else {
+                y.abs() - 1.5
+            };
+            assert!(
+                (r.distance - exact).abs() < 1e-12,
+                "({x},{y}): {} vs {exact}",
+                r.distance
+            );
         }
     }
 
@@ -441,7 +476,11 @@ mod tests {
                 let s2 = pos12 * e2.support_point(n2);
                 best = best.max(s2.dot(n) - h1);
             }
-            assert!((r.distance - best).abs() < 1e-6, "({x},{y},{a}): {} vs {best}", r.distance);
+            assert!(
+                (r.distance - best).abs() < 1e-6,
+                "({x},{y},{a}): {} vs {best}",
+                r.distance
+            );
         }
     }
 
@@ -450,7 +489,13 @@ mod tests {
         let r = d(&BallCurve { radius: 1.0 }, &BallCurve { radius: 1.0 }, 1.5, 0.0, 0.0);
         assert!((r.distance + 0.5).abs() < 1e-12);
         assert_eq!(r.status, DistanceStatus::Penetrating);
-        let r = d(&CapsuleEllipse::new(0.5, 1.0, 0.8), &Ellipse::new(0.5, 0.5), 0.9, 0.0, 0.0);
+        let r = d(
+            &CapsuleEllipse::new(0.5, 1.0, 0.8),
+            &Ellipse::new(0.5, 0.5),
+            0.9,
+            0.0,
+            0.0,
+        );
         assert!((r.distance + 0.1).abs() < 1e-12, "{}", r.distance);
     }
 }

@@ -7,14 +7,22 @@
 //! 1. At t₀ the stationary distance gives φ₀ and D₀ = F(φ₀, t₀) ([`crate::stationary`]).
 //! 2. Each step, at an accepted point (φₖ, tₖ) with S ≈ 0 and Dₖ = F(φₖ, tₖ) above the target δ:
 //!    * the Taylor polynomial of S of order 2 (eqs. 7–8) gives the curve's slope φ' = −S_t/S_φ and
-//!      bending φ'' = −(S_tt + 2S_φt φ' + S_φφ φ'²)/S_φ; along it D' = F_t and D'' = F_tt + F_φt φ'
-//!      (F_φ = −ω₁S vanishes on the curve);
+//! ```text
+//!  bending φ'' = −(S_tt + 2S_φt φ' + S_φφ φ'²)/S_φ; along it D' = F_t and D'' = F_tt + F_φt φ'
+//!  (F_φ = −ω₁S vanishes on the curve);
+//! ```
 //!    * the step h is the smallest of the adaptive accuracy step, the window's end, and the
-//!      **guard** below; the predictor moves to φₖ + φ'h + φ''h²/2 at tₖ + h;
+//! ```text
+//!  **guard** below; the predictor moves to φₖ + φ'h + φ''h²/2 at tₖ + h;
+//! ```
 //!    * the **corrector** solves S(φ, tₖ + h) = 0 by Halley's method at fixed t, reusing the
-//!      positions at tₖ + h and safeguarded by a bracket (derivatives jump at piece ends);
+//! ```text
+//!  positions at tₖ + h and safeguarded by a bracket (derivatives jump at piece ends);
+//! ```
 //!    * when the corrector fails or has to move φ far from the prediction the step is
-//!      **backtracked**: h is halved and the step retried.
+//! ```text
+//!  **backtracked**: h is halved and the step retried.
+//! ```
 //! 3. It stops at contact (Dₖ − δ ≤ tol), when the bounding circles about the rotation centres
 //!    can no longer meet before the window ends, or at the window's end.
 //!
@@ -26,7 +34,9 @@
 //! g = −h₂(m(t)) − (C₁ − C₂)·R(α₁)N₁ − c₂·N − const (world rotation centres C, object2's local
 //! centre c₂, m = −N turning at the relative spin ω = ω₁ − ω₂):
 //!
-//!     |g''| ≤ M = ω²·max|h₂''| + 2|ω₁||ΔV| + ω₁²·max|ΔC| + ω²|c₂|,
+//! ```text
+//! |g''| ≤ M = ω²·max|h₂''| + 2|ω₁||ΔV| + ω₁²·max|ΔC| + ω²|c₂|,
+//! ```
 //!
 //! with max|h₂''| = [`ConvexCurve::support_dd_bound`], ΔV the relative velocity of the rotation
 //! centres and max|ΔC| their largest distance over the step (ΔC is affine in t, so its norm is
@@ -47,8 +57,8 @@
 
 use crate::curve::ConvexCurve;
 use crate::distances::{eval_pair, PairFrame, PairJet, RelativeMotion};
-use crate::stationary::{stationary_in_frame, DistanceOptions, QueryError, Solver};
 use crate::math::Vector;
+use crate::stationary::{stationary_in_frame, DistanceOptions, QueryError, Solver};
 use parry2d_f64::query::NonlinearRigidMotion;
 
 /// Tolerances, caps and switches of [`time_of_impact`]. Distances are relative to the size s
@@ -228,7 +238,16 @@ pub fn time_of_impact(
     end_time: f64,
     options: &ToiOptions,
 ) -> Result<TimeOfImpact, QueryError> {
-    toi_roles(shape1, motion1, shape2, motion2, start_time, end_time, options, &mut NoTrace)
+    toi_roles(
+        shape1,
+        motion1,
+        shape2,
+        motion2,
+        start_time,
+        end_time,
+        options,
+        &mut NoTrace,
+    )
 }
 
 /// As [`time_of_impact`], recording every predictor step, correction and backtrack in `trace`
@@ -348,7 +367,11 @@ impl<'a> Tracker<'a> {
         let span = self.t1 - t;
         // min over s ∈ [0, span] of |p + v s|.
         let vv = v.length_squared();
-        let s = if vv > 0.0 { (-p.dot(v) / vv).clamp(0.0, span) } else { 0.0 };
+        let s = if vv > 0.0 {
+            (-p.dot(v) / vv).clamp(0.0, span)
+        } else {
+            0.0
+        };
         (p + v * s).length() > self.reach * (1.0 + 1e-12)
     }
 
@@ -356,7 +379,11 @@ impl<'a> Tracker<'a> {
     fn guard_bound(&self, t: f64, h: f64) -> f64 {
         let w = self.rel.omega();
         let w1 = self.omega1;
-        let dc = self.rel.center_offset(t).length().max(self.rel.center_offset(t + h).length());
+        let dc = self
+            .rel
+            .center_offset(t)
+            .length()
+            .max(self.rel.center_offset(t + h).length());
         let dv = self.rel.center_velocity().length();
         w * w * (self.h2dd + self.c2_len) + 2.0 * w1.abs() * dv + w1 * w1 * dc
     }
@@ -404,7 +431,8 @@ impl<'a> Tracker<'a> {
         let j0 = sv.eval(phi)?;
         let r = sv.local_root(phi, j0);
         self.cost.evaluations += sv.evaluations;
-        self.cost.corrector_iterations += sv.evaluations;
+        // The first evaluation is the prediction itself; the rest are Halley/bisection steps.
+        self.cost.corrector_iterations += sv.evaluations.saturating_sub(1);
         let (phi, j) = r?;
         trace.push(TraceEvent::Correct { phi, t, side: j.side.v });
         Some((phi, j))
@@ -413,16 +441,22 @@ impl<'a> Tracker<'a> {
     fn run<T: Tracer>(mut self, trace: &mut T) -> Result<TimeOfImpact, QueryError> {
         let delta = self.opts.target_distance;
         let window = self.t1 - self.t0;
-        let (c1, _) = self.rel.centers();
-        let _ = c1;
         let start_frame = self.rel.frame(self.t0);
         // Start φ: object1's normal pointing at object2's rotation centre.
         let dir2 = start_frame.unrotate(-start_frame.q);
-        let dir2 = if dir2.length() > 0.0 { dir2.normalize() } else { Vector::X };
+        let dir2 = if dir2.length() > 0.0 {
+            dir2.normalize()
+        } else {
+            Vector::X
+        };
         let phi_start = self.obj1.phi_range_of_normal(dir2).0;
         let (mut phi, mut j) = self.global_at(self.t0, phi_start)?;
         let mut t = self.t0;
-        trace.push(TraceEvent::Start { phi, t, distance: j.fwd.v });
+        trace.push(TraceEvent::Start {
+            phi,
+            t,
+            distance: j.fwd.v,
+        });
 
         if j.fwd.v <= delta + self.tol_d {
             if self.opts.stop_at_penetration || j.fwd.t <= 0.0 {
@@ -472,10 +506,11 @@ impl<'a> Tracker<'a> {
             };
             let d1 = j.fwd.t;
             let mut h = h_acc.min(h_max);
-            // Limit the φ-travel of one step (the curve's bending, eq. 8).
+            // Limit the φ-travel of one step (the curve's bending, eq. 8): the largest h with
+            // |φ'|h + |φ''|h²/2 ≤ max_dphi.
             let travel = dphi.abs() * h + 0.5 * ddphi.abs() * h * h;
             if travel > max_dphi {
-                h *= max_dphi / travel;
+                h = 2.0 * max_dphi / (dphi.abs() + (dphi * dphi + 2.0 * ddphi.abs() * max_dphi).sqrt());
             }
             // The guard (module docs).
             let m = self.guard_bound(t, h);
@@ -484,13 +519,16 @@ impl<'a> Tracker<'a> {
             if guard_limited {
                 h = h_guard;
             }
-            if !(h > 0.0) || t + h <= t {
+            if h.is_nan() || h <= 0.0 || t + h <= t {
                 // No representable progress: the guard pins us at t.
                 return Ok(self.result(ToiStatus::OutOfIterations, t, &j));
             }
             let t_new = if h >= h_max { self.t1 } else { t + h };
             let phi_pred = phi + dphi * h + 0.5 * ddphi * h * h;
-            trace.push(TraceEvent::Predict { phi: phi_pred, t: t_new });
+            trace.push(TraceEvent::Predict {
+                phi: phi_pred,
+                t: t_new,
+            });
             let corrected = self.correct(t_new, phi_pred, trace);
             let accept = match corrected {
                 Some((phi_c, jc)) => {
@@ -517,7 +555,11 @@ impl<'a> Tracker<'a> {
                     t = t_new;
                     phi = phi_c;
                     j = jc;
-                    trace.push(TraceEvent::Accept { phi, t, distance: j.fwd.v });
+                    trace.push(TraceEvent::Accept {
+                        phi,
+                        t,
+                        distance: j.fwd.v,
+                    });
                     if !guard_limited || h >= h_acc * 0.99 {
                         // Adapt the accuracy step to how far the prediction was off.
                         if moved < 1e-3 {
@@ -536,7 +578,10 @@ impl<'a> Tracker<'a> {
                 }
                 None => {
                     self.cost.backtracks += 1;
-                    trace.push(TraceEvent::Backtrack { phi: phi_pred, t: t_new });
+                    trace.push(TraceEvent::Backtrack {
+                        phi: phi_pred,
+                        t: t_new,
+                    });
                     h_acc = h.min(h_acc) * 0.5;
                     if h_acc <= window * 1e-13 {
                         // Cannot make progress by tracking: recover with the global distance.
@@ -576,7 +621,12 @@ impl<'a> Tracker<'a> {
     /// From a separating contact at t, steps forward until the distance exceeds the target
     /// (returns that point), the shapes start approaching again while still in contact (returns
     /// that point, distance ≤ target), or the window ends (None).
-    fn leave_contact(&mut self, mut t: f64, mut phi: f64, j0: &PairJet) -> Result<Option<(f64, f64, PairJet)>, QueryError> {
+    fn leave_contact(
+        &mut self,
+        mut t: f64,
+        mut phi: f64,
+        j0: &PairJet,
+    ) -> Result<Option<(f64, f64, PairJet)>, QueryError> {
         let delta = self.opts.target_distance;
         let window = self.t1 - self.t0;
         let mut j = *j0;
@@ -620,7 +670,12 @@ mod tests {
     #[test]
     fn head_on_discs_hit_at_the_closed_form_time() {
         let (a, b) = (BallCurve { radius: 0.5 }, BallCurve { radius: 0.25 });
-        let m1 = NonlinearRigidMotion::new(Pose::new(Vector::new(-2.0, 0.0), 0.0), Vector::ZERO, Vector::new(1.5, 0.0), 3.0);
+        let m1 = NonlinearRigidMotion::new(
+            Pose::new(Vector::new(-2.0, 0.0), 0.0),
+            Vector::ZERO,
+            Vector::new(1.5, 0.0),
+            3.0,
+        );
         let m2 = still(1.0, 0.0, 0.0);
         let r = time_of_impact(&a, &m1, &b, &m2, 0.0, 4.0, &ToiOptions::default()).unwrap();
         assert_eq!(r.status, ToiStatus::Hit);
@@ -663,7 +718,12 @@ mod tests {
     #[test]
     fn passing_shapes_report_no_hit() {
         let (a, b) = (Ellipse::new(0.5, 0.2), Ellipse::new(0.3, 0.6));
-        let m1 = NonlinearRigidMotion::new(Pose::new(Vector::new(-3.0, 2.0), 0.0), Vector::ZERO, Vector::new(6.0, 0.0), 10.0);
+        let m1 = NonlinearRigidMotion::new(
+            Pose::new(Vector::new(-3.0, 2.0), 0.0),
+            Vector::ZERO,
+            Vector::new(6.0, 0.0),
+            10.0,
+        );
         let m2 = still(0.0, 0.0, 0.3);
         let r = time_of_impact(&a, &m1, &b, &m2, 0.0, 1.0, &ToiOptions::default()).unwrap();
         assert_eq!(r.status, ToiStatus::NoHit);
@@ -673,7 +733,12 @@ mod tests {
     fn appendix_d_heptagon_hits_the_ellipse_after_about_half_a_turn() {
         let hept = RoundedPolygon::regular(7, 1.0, 0.15);
         let ell = Ellipse::new(0.5, 1.5);
-        let m1 = NonlinearRigidMotion::new(Pose::new(Vector::new(-1.85, 0.0), 0.0), Vector::ZERO, Vector::new(2.0, 0.0), 30.0);
+        let m1 = NonlinearRigidMotion::new(
+            Pose::new(Vector::new(-1.85, 0.0), 0.0),
+            Vector::ZERO,
+            Vector::new(2.0, 0.0),
+            30.0,
+        );
         let m2 = still(0.0, 0.0, 0.0);
         let r = time_of_impact(&hept, &m1, &ell, &m2, 0.0, 1.0, &ToiOptions::default()).unwrap();
         assert_eq!(r.status, ToiStatus::Hit);

@@ -26,9 +26,17 @@ fn random_shape(kind: &str, rng: &mut Rng) -> Box<dyn Shape> {
     match kind {
         "ellipse" => Box::new(Ellipse::new(s, s * rng.uniform(0.1, 1.0))),
         "ball" => Box::new(Ball::new(s)),
-        "rounded" => Box::new(RoundedPolygon::regular((rng.next() % 6 + 3) as usize, s, s * rng.uniform(0.02, 0.4))),
+        "rounded" => Box::new(RoundedPolygon::regular(
+            (rng.next() % 6 + 3) as usize,
+            s,
+            s * rng.uniform(0.02, 0.4),
+        )),
         "sharp" => Box::new(RoundedPolygon::regular((rng.next() % 6 + 3) as usize, s, 0.0)),
-        "capsule_ellipse" => Box::new(CapsuleEllipse::new(s * 0.5, s * rng.uniform(0.2, 1.0), s * rng.uniform(0.3, 1.0))),
+        "capsule_ellipse" => Box::new(CapsuleEllipse::new(
+            s * 0.5,
+            s * rng.uniform(0.2, 1.0),
+            s * rng.uniform(0.3, 1.0),
+        )),
         "cuboid" => Box::new(Cuboid::new(Vector::new(s, s * rng.uniform(0.2, 1.0)))),
         "capsule" => Box::new(Capsule::new_y(s * rng.uniform(0.2, 1.0), s * 0.4)),
         _ => unreachable!(),
@@ -60,7 +68,10 @@ fn dense_gap(pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape) -> f64 {
         }
     }
     // Golden-section refinement around the best sample.
-    let (mut a, mut b) = (bt - std::f64::consts::TAU / m as f64, bt + std::f64::consts::TAU / m as f64);
+    let (mut a, mut b) = (
+        bt - std::f64::consts::TAU / m as f64,
+        bt + std::f64::consts::TAU / m as f64,
+    );
     for _ in 0..100 {
         let (x1, x2) = (b - 0.618_033_988_75 * (b - a), a + 0.618_033_988_75 * (b - a));
         if gap(x1) > gap(x2) {
@@ -104,7 +115,10 @@ fn distance_and_contact_agree_with_parry_over_random_configurations() {
             let dir = rng.uniform(-3.2, 3.2);
             let r = reach * rng.uniform(0.2, 1.4);
             let pos12 = Pose::new(Vector::new(r * dir.cos(), r * dir.sin()), rng.uniform(-3.2, 3.2));
-            let ours = d.signed_distance(&pos12, &*g1, &*g2).expect("pair handled").expect("query ok");
+            let ours = d
+                .signed_distance(&pos12, &*g1, &*g2)
+                .expect("pair handled")
+                .expect("query ok");
             iters.push(ours.newton_iterations);
             let parry_d = DefaultQueryDispatcher.distance(&pos12, &*g1, &*g2).unwrap().distance;
             let mine_d = d.distance(&pos12, &*g1, &*g2).unwrap().distance;
@@ -113,7 +127,10 @@ fn distance_and_contact_agree_with_parry_over_random_configurations() {
                 if (mine_d - parry_d).abs() > 1e-6 * size {
                     // Disagreement: the dense reference decides, and ours must match it.
                     let dense = dense_gap(&pos12, &*g1, &*g2);
-                    assert!((mine_d - dense).abs() <= 1e-9 * size, "{k1}-{k2} case {case}: ours {mine_d} parry {parry_d} dense {dense}");
+                    assert!(
+                        (mine_d - dense).abs() <= 1e-9 * size,
+                        "{k1}-{k2} case {case}: ours {mine_d} parry {parry_d} dense {dense}"
+                    );
                     parry_off += 1;
                 } else {
                     worst_sep = worst_sep.max((mine_d - parry_d).abs() / size);
@@ -165,22 +182,34 @@ fn closed_forms_through_the_dispatcher_hold_to_1e_12() {
     let e = Ellipse::new(0.7, 0.7);
     let b = Ball::new(0.4);
     for (x, y) in [(2.0, 0.3), (0.5, -0.2), (-1.0, 0.05)] {
-        let r = d.signed_distance(&Pose::new(Vector::new(x, y), 0.4), &e, &b).unwrap().unwrap();
-        let exact = (x * x + y * y as f64).sqrt() - 1.1;
+        let r = d
+            .signed_distance(&Pose::new(Vector::new(x, y), 0.4), &e, &b)
+            .unwrap()
+            .unwrap();
+        let exact = (x * x + y * y).sqrt() - 1.1;
         assert!((r.distance - exact).abs() < 1e-12);
     }
     // Axis-aligned ellipses on a common axis.
     let (e1, e2) = (Ellipse::new(0.5, 0.8), Ellipse::new(0.3, 2.0));
-    let r = d.signed_distance(&Pose::new(Vector::new(1.9, 0.0), 0.0), &e1, &e2).unwrap().unwrap();
+    let r = d
+        .signed_distance(&Pose::new(Vector::new(1.9, 0.0), 0.0), &e1, &e2)
+        .unwrap()
+        .unwrap();
     assert!((r.distance - 1.1).abs() < 1e-12);
     // A disc against a box face.
     let bx = Cuboid::new(Vector::new(1.0, 0.5));
     let disc = Ellipse::new(0.25, 0.25);
-    let r = d.signed_distance(&Pose::new(Vector::new(0.3, 1.5), 0.0), &bx, &disc).unwrap().unwrap();
+    let r = d
+        .signed_distance(&Pose::new(Vector::new(0.3, 1.5), 0.0), &bx, &disc)
+        .unwrap()
+        .unwrap();
     assert!((r.distance - 0.75).abs() < 1e-12, "{}", r.distance);
     // An ellipse above a half-space.
     let hs = HalfSpace::new(Vector::Y);
-    let r = d.signed_distance(&Pose::new(Vector::new(0.0, -2.0), 0.0), &e1, &hs).unwrap().unwrap();
+    let r = d
+        .signed_distance(&Pose::new(Vector::new(0.0, -2.0), 0.0), &e1, &hs)
+        .unwrap()
+        .unwrap();
     assert!((r.distance - 1.2).abs() < 1e-12, "{}", r.distance);
 }
 
@@ -190,7 +219,10 @@ fn contact_manifolds_of_parrys_default_dispatcher_work_on_smooth_shapes() {
     let e1 = Ellipse::new(1.0, 0.5);
     let e2 = Ellipse::new(0.6, 0.3);
     let bx = Cuboid::new(Vector::new(1.0, 0.2));
-    for (g2, pos) in [(&e2 as &dyn Shape, Vector::new(1.4, 0.2)), (&bx as &dyn Shape, Vector::new(0.0, 0.65))] {
+    for (g2, pos) in [
+        (&e2 as &dyn Shape, Vector::new(1.4, 0.2)),
+        (&bx as &dyn Shape, Vector::new(0.0, 0.65)),
+    ] {
         let mut manifolds: Vec<ContactManifold<(), ()>> = Vec::new();
         let mut ws = None;
         DefaultQueryDispatcher

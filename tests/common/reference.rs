@@ -64,13 +64,7 @@ pub fn world_support(shape: &dyn ConvexCurve, pose: &Pose, n: Vector) -> f64 {
 /// The gap along the unit direction `n` (pointing from shape 1 towards shape 2):
 /// g(n) = −h₁(n) − h₂(−n). A lower bound on the signed distance; its maximum over n is the
 /// signed distance.
-pub fn gap_along(
-    shape1: &dyn ConvexCurve,
-    pose1: &Pose,
-    shape2: &dyn ConvexCurve,
-    pose2: &Pose,
-    n: Vector,
-) -> f64 {
+pub fn gap_along(shape1: &dyn ConvexCurve, pose1: &Pose, shape2: &dyn ConvexCurve, pose2: &Pose, n: Vector) -> f64 {
     -world_support(shape1, pose1, n) - world_support(shape2, pose2, -n)
 }
 
@@ -280,9 +274,7 @@ pub fn speed_bound(
 ) -> f64 {
     let r1 = shape1.bounding_radius() + motion1.local_center.length();
     let r2 = shape2.bounding_radius() + motion2.local_center.length();
-    (motion1.linvel - motion2.linvel).length()
-        + motion1.angvel.abs() * r1
-        + motion2.angvel.abs() * r2
+    (motion1.linvel - motion2.linvel).length() + motion1.angvel.abs() * r1 + motion2.angvel.abs() * r2
 }
 
 /// The size s of a pair as in DESIGN § 4: the larger bounding radius about the local origins.
@@ -553,7 +545,7 @@ pub fn reference_toi_with(
         t += h;
         res.steps += 1;
         let w = (2.0 * dtheta.abs()).max(1e-9);
-        let (th, d) = if res.steps % opts.resample_every == 0 {
+        let (th, d) = if res.steps.is_multiple_of(opts.resample_every) {
             pair.full(t)
         } else {
             pair.lower(t, theta, w, target, opts.lower_bound_slack)
@@ -581,8 +573,7 @@ pub fn reference_toi_with(
     } else {
         // Round-off level of D: a few ulps of the coordinates involved.
         let (q1, q2) = (motion1.position_at_time(t), motion2.position_at_time(t));
-        let scale =
-            pair_size(shape1, shape2) + q1.translation.length().max(q2.translation.length());
+        let scale = pair_size(shape1, shape2) + q1.translation.length().max(q2.translation.length());
         let noise = 8.0 * f64::EPSILON * scale;
         let floor = 1e-15 * (t.abs() + window);
         // Next probe step from a descending slope: twice the linear root, and long enough for
@@ -674,10 +665,7 @@ pub fn reference_toi_with(
     let dh = 1e-7 * window;
     let (ta, tb) = ((time - dh).max(t0), (time + dh).min(t1));
     if tb > ta {
-        let (da, db) = (
-            pair.precise_distance(ta, theta),
-            pair.precise_distance(tb, theta),
-        );
+        let (da, db) = (pair.precise_distance(ta, theta), pair.precise_distance(tb, theta));
         res.slope = (db - da) / (tb - ta);
     }
     res.evals = pair.evals;

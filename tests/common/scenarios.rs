@@ -226,20 +226,11 @@ impl Scenario {
     }
     /// The size s of DESIGN § 4: the larger bounding radius of the two shapes.
     pub fn size(&self) -> f64 {
-        self.curve1()
-            .bounding_radius()
-            .max(self.curve2().bounding_radius())
+        self.curve1().bounding_radius().max(self.curve2().bounding_radius())
     }
     /// The reference signed distance at time `t`.
     pub fn distance_at(&self, t: f64) -> f64 {
-        reference_distance_at(
-            self.curve1(),
-            &self.motion1,
-            self.curve2(),
-            &self.motion2,
-            t,
-        )
-        .distance
+        reference_distance_at(self.curve1(), &self.motion1, self.curve2(), &self.motion2, t).distance
     }
     /// The reference time of impact (default options).
     pub fn reference(&self) -> RefToi {
@@ -356,19 +347,15 @@ fn polygon(rng: &mut Rng, s: f64, rounded: bool) -> TestShape {
 }
 
 fn capsule_ellipse(rng: &mut Rng, s: f64) -> TestShape {
-    let (r1, r2, r3) = (
-        rng.uniform(0.2, 0.8),
-        rng.uniform(0.1, 0.8),
-        rng.uniform(0.1, 1.5),
-    );
+    let (r1, r2, r3) = (rng.uniform(0.2, 0.8), rng.uniform(0.1, 0.8), rng.uniform(0.1, 1.5));
     TestShape::CapsuleEllipse(CapsuleEllipse::new(s * r1, s * r2, s * r3))
 }
 
 fn shapes(class: ScenarioClass, rng: &mut Rng, s: f64) -> (TestShape, TestShape) {
     let first = match class {
-        ScenarioClass::EllipseEllipse
-        | ScenarioClass::EllipseBall
-        | ScenarioClass::EllipseRoundedPolygon => ellipse(rng, s),
+        ScenarioClass::EllipseEllipse | ScenarioClass::EllipseBall | ScenarioClass::EllipseRoundedPolygon => {
+            ellipse(rng, s)
+        }
         ScenarioClass::RoundedPolygonEllipse => polygon(rng, s, true),
         ScenarioClass::CapsuleEllipseEllipse => capsule_ellipse(rng, s),
         ScenarioClass::SharpPolygonEllipse => polygon(rng, s, false),
@@ -551,10 +538,7 @@ fn try_generate(class: ScenarioClass, seed: u64, rng: &mut Rng) -> Option<Scenar
     let x2_local = c2.support_point(rot2.rotation.inverse_transform_vector(-n));
     let p2 = x1 + n * gap_total - rot2.rotation * x2_local;
     let pose2c = Pose::new(p2, a2);
-    debug_assert!(
-        ((-world_support(c1, &pose1c, n) - world_support(c2, &pose2c, -n)) - gap_total).abs()
-            <= 1e-9 * size
-    );
+    debug_assert!(((-world_support(c1, &pose1c, n) - world_support(c2, &pose2c, -n)) - gap_total).abs() <= 1e-9 * size);
 
     // Velocities: v_rel = v2 − v1 = −un·n + ut·n⊥ (+ the normal part cancelling the spins' effect
     // on the gap along n when requested: then the distance has a critical point at tc).
@@ -614,9 +598,7 @@ pub fn generate(class: ScenarioClass, seed: u64) -> Scenario {
 
 /// `count` scenarios of `class` for seeds `first_seed..first_seed + count`.
 pub fn scenarios(class: ScenarioClass, first_seed: u64, count: usize) -> Vec<Scenario> {
-    (0..count as u64)
-        .map(|i| generate(class, first_seed + i))
-        .collect()
+    (0..count as u64).map(|i| generate(class, first_seed + i)).collect()
 }
 
 /// Runs `f` over `items` on all available cores (scoped threads pulling indices from a shared
@@ -643,10 +625,7 @@ pub fn par_map<T: Sync, R: Send>(items: &[T], f: impl Fn(&T) -> R + Sync) -> Vec
                 })
             })
             .collect();
-        handles
-            .into_iter()
-            .flat_map(|h| h.join().unwrap())
-            .collect()
+        handles.into_iter().flat_map(|h| h.join().unwrap()).collect()
     });
     out.sort_by_key(|(i, _)| *i);
     out.into_iter().map(|(_, r)| r).collect()

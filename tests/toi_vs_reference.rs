@@ -1,0 +1,233 @@
+//! The time of impact against the independent conservative-advancement reference of
+//! `tests/common` (exact support functions) and against parry's `cast_shapes_nonlinear`,
+//! over random scenarios of every class: no missed impact, no false impact, impact times to
+//! 1e-9 of the window where the contact is well conditioned.
+
+mod common;
+
+use common::{generate, RefOutcome, Scenario, ScenarioClass, TestShape};
+use parry2d_f64::query::{DefaultQueryDispatcher, QueryDispatcher};
+use parry2d_f64::shape::{Ball, Shape};
+use smooth_ccd2d::{time_of_impact, SmoothDispatcher, TimeOfImpact, ToiOptions, ToiStatus};
+
+fn cases() -> usize {
+    std::env::var("SMOOTH_CCD_CASES")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(5_000)
+}
+
+fn ours(s: &Scenario) -> TimeOfImpact {
+    let opts = ToiOptions {
+        target_distance: s.target,
+        ..ToiOptions::default()
+    };
+    time_of_impact(s.curve1(), &s.motion1, s.curve2(), &s.motion2, s.t0, s.t1, &opts).expect("valid scenario")
+}
+
+fn parry_shape(t: &TestShape) -> Box<dyn Shape> {
+    match t {
+        TestShape::Ellipse(e) => Box::new(*e),
+        TestShape::Ball(b) => Box::new(Ball::new(b.radius)),
+        TestShape::RoundedPolygon(p) => Box::new(p.clone()),
+        TestShape::CapsuleEllipse(c) => Box::new(c.clone()),
+    }
+}
+
+#[derive(Default)]
+struct Stats {
+    steps: Vec<usize>,
+    corrector: Vec<usize>,
+    backtracks: Vec<usize>,
+}
+
+fn med_max(v: &mut [usize]) -> (usize, usize) {
+    v.sort_unstable();
+    (v[v.len() / 2], *v.last().unwrap())
+}
+
+#[test]
+fn time_of_impact_matches_the_reference_over_random_scenarios() {
+    let n = cases();
+    let mut table = Vec::new();
+    for class in ScenarioClass::ALL {
+        let mut st = Stats::default();
+        let (mut hits, mut capped, mut grazes) = (0, 0, 0);
+        let mut worst_dt = 0.0f64;
+        for seed in 0..n as u64 {
+            let s = generate(class, seed);
+            let r = ours(&s);
+            let size = s.size();
+            let window = s.t1 - s.t0;
+            let tol = 1e-10 * size;
+            st.steps.push(r.cost.predictor_steps);
+            st.corrector.push(r.cost.corrector_iterations);
+            st.backtracks.push(r.cost.backtracks);
+            let rf = s.reference();
+            let ctx = || {
+                format!(
+                    "{} seed {seed}: ours {:?} at {} (D = {:e}); reference {:?}",
+                    class.name(),
+                    r.status,
+                    r.time,
+                    r.distance,
+                    rf.outcome
+                )
+            };
+            if rf.initially_within_target {
+                assert_eq!(r.status, ToiStatus::PenetratingAtStart, "{}", ctx());
+                continue;
+            }
+            match rf.outcome {
+                RefOutcome::Capped { reached } => {
+                    capped += 1;
+                    // No contact before `reached`: ours must not report one there.
+                    if r.status == ToiStatus::Hit {
+                        assert!(r.time >= reached - 1e-9 * window, "{}", ctx());
+                    }
+                }
+                RefOutcome::Miss => {
+                    // A false impact is allowed only within our distance tolerance of the target.
+                    if r.status == ToiStatus::Hit {
+                        assert!(
+                            rf.min_gap <= tol + 1e-12 * size,
+                            "false impact: {} (min gap {:e})",
+                            ctx(),
+                            rf.min_gap
+                        );
+                        grazes += 1;
+                    } else {
+                        assert_eq!(r.status, ToiStatus::NoHit, "{}", ctx());
+                    }
+                }
+                RefOutcome::Hit { time, crossed } => {
+                    if r.status != ToiStatus::Hit {
+                        // A miss is allowed only for a graze that never went below the target by
+                        // more than the tolerance of the reference's distance.
+                        assert!(!crossed && rf.min_gap >= -1e-12 * size, "missed impact: {}", ctx());
+                        grazes += 1;
+                        continue;
+                    }
+                    hits += 1;
+                    // Our reported distance holds at our time (independent distance).
+                    let d = s.distance_at(r.time) - s.target;
+                    assert!(
+                        d >= -1e-11 * size && d <= tol + 1e-11 * size,
+                        "distance at our time {d:e}: {}",
+                        ctx()
+                    );
+                    let dt = (r.time - time).abs() / window;
+                    // Conditioning: a time error dt moves D by |slope|·dt; grazes are ill-conditioned.
+                    let slope = rf.slope.abs();
+                    let allowed = 1e-9 + (tol + 1e-11 * size) / (slope * window).max(1e-300);
+                    assert!(
+                        dt <= allowed.max(1e-9) || !crossed,
+                        "time off by {dt:e} of the window: {}",
+                        ctx()
+                    );
+                    if crossed && slope * window > 1e-3 * size {
+                        worst_dt = worst_dt.max(dt);
+                    }
+                }
+            }
+        }
+        let (sm, sx) = med_max(&mut st.steps);
+        let (cm, cx) = med_max(&mut st.corrector);
+        let (bm, bx) = med_max(&mut st.backtracks);
+        let line = format!(
+            "| {} | {n} | {hits} | {sm} / {sx} | {cm} / {cx} | {bm} / {bx} | {worst_dt:.1e} | {grazes} | {capped} |",
+            class.name()
+        );
+        println!("{line}");
+        table.push(line);
+    }
+    println!("| class | cases | hits | predictor steps median / worst | corrector iterations median / worst | backtracks median / worst | worst |Δt|/window (well-conditioned hits) | grazes within tolerance | reference capped |");
+    for l in table {
+        println!("{l}");
+    }
+}
+
+#[test]
+fn parry_nonlinear_cast_disagreements_are_settled_by_the_reference() {
+    let n = (cases() / 10).max(50);
+    let d = SmoothDispatcher::default();
+    for class in ScenarioClass::ALL {
+        let (mut agree, mut parry_wrong) = (0, 0);
+        for seed in 0..n as u64 {
+            let s = generate(class, seed + 100_000);
+            let (g1, g2) = (parry_shape(&s.shape1), parry_shape(&s.shape2));
+            let p = DefaultQueryDispatcher
+                .cast_shapes_nonlinear(&s.motion1, &*g1, &s.motion2, &*g2, s.t0, s.t1, true)
+                .unwrap();
+            let m = d
+                .cast_shapes_nonlinear(&s.motion1, &*g1, &s.motion2, &*g2, s.t0, s.t1, true)
+                .unwrap();
+            let window = s.t1 - s.t0;
+            let same = match (p, m) {
+                (None, None) => true,
+                (Some(a), Some(b)) => (a.time_of_impact - b.time_of_impact).abs() <= 1e-6 * window,
+                _ => false,
+            };
+            if same {
+                agree += 1;
+                continue;
+            }
+            // Disagreement: the reference decides, and it must side with us.
+            let rf = s.reference();
+            if rf.is_capped() {
+                continue;
+            }
+            match (rf.hit_time(), m) {
+                (Some(t), Some(b)) => assert!(
+                    (t - b.time_of_impact).abs() <= 1e-6 * window || rf.min_gap.abs() < 1e-9 * s.size(),
+                    "{} seed {}: ref {t}, ours {}",
+                    class.name(),
+                    s.seed,
+                    b.time_of_impact
+                ),
+                (None, None) => {}
+                (rt, mt) => assert!(
+                    rf.min_gap.abs() < 1e-9 * s.size(),
+                    "{} seed {}: ref {rt:?}, ours {:?}",
+                    class.name(),
+                    s.seed,
+                    mt.map(|h| h.time_of_impact)
+                ),
+            }
+            parry_wrong += 1;
+        }
+        println!("{}: {n} scenarios, parry agrees with ours in {agree}, reference sides with ours against parry in {parry_wrong}", class.name());
+    }
+}
+
+#[test]
+fn appendix_d_spinning_heptagon_hits_the_ellipse_where_the_reference_says() {
+    use parry2d_f64::math::{Pose, Vector};
+    use parry2d_f64::query::NonlinearRigidMotion;
+    use smooth_ccd2d::{Ellipse, RoundedPolygon};
+    let hept = RoundedPolygon::regular(7, 1.0, 0.15);
+    let ell = Ellipse::new(0.5, 1.5);
+    let m1 = NonlinearRigidMotion::new(
+        Pose::new(Vector::new(-1.85, 0.0), 0.0),
+        Vector::ZERO,
+        Vector::new(2.0, 0.0),
+        30.0,
+    );
+    let m2 = NonlinearRigidMotion::constant_position(Pose::IDENTITY);
+    let r = time_of_impact(&hept, &m1, &ell, &m2, 0.0, 1.0, &ToiOptions::default()).unwrap();
+    let rf = common::reference_toi(&hept, &m1, &ell, &m2, 0.0, 1.0, 0.0);
+    let t_ref = rf.hit_time().expect("the reference hits");
+    assert_eq!(r.status, ToiStatus::Hit);
+    assert!((r.time - t_ref).abs() <= 1e-9, "ours {} reference {t_ref}", r.time);
+    let p1 = m1.position_at_time(r.time);
+    let turns = 30.0 * r.time / std::f64::consts::TAU;
+    assert!(turns > 0.25 && turns < 0.75, "about half a turn: {turns}");
+    println!(
+        "Appendix D: t = {:.15} (reference {t_ref:.15}, {:.3} turns), contact point {:?}, normal {:?} (world), cost {:?}",
+        r.time,
+        turns,
+        p1 * r.point1,
+        p1.rotation * r.normal1,
+        r.cost
+    );
+}
