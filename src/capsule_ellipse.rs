@@ -155,7 +155,6 @@ impl ConvexCurve for CapsuleEllipse {
     fn support_point(&self, n: Vector) -> Vector {
         let n = n.normalize_or(Vector::X);
         let (lo, hi) = self.phi_range_of_normal(n);
-        let _ = PI;
         self.eval(0.5 * (lo + hi)).point
     }
 }

@@ -37,6 +37,7 @@ pub mod ellipse;
 pub mod error;
 pub mod halfspace;
 pub mod jet;
+pub mod manifold;
 pub mod math;
 pub mod parry_shape;
 pub mod rounded_polygon;

@@ -70,8 +70,7 @@ use parry2d_f64::bounding_volume::{Aabb, BoundingSphere};
 use parry2d_f64::mass_properties::MassProperties;
 use parry2d_f64::query::{PointProjection, PointQuery, Ray, RayCast, RayIntersection};
 use parry2d_f64::shape::{
-    FeatureId, PackedFeatureId, PolygonalFeature, PolygonalFeatureMap, Shape, ShapeType,
-    SupportMap, TypedShape,
+    FeatureId, PackedFeatureId, PolygonalFeature, PolygonalFeatureMap, Shape, ShapeType, SupportMap, TypedShape,
 };
 
 /// Largest angle (radians) between a direction and the normal of a flat piece for which the
@@ -129,11 +128,7 @@ fn piece_bounds(bp: &[f64], k: usize) -> (f64, f64) {
         return (-PI, PI);
     }
     let s = bp[k];
-    let e = if k + 1 < bp.len() {
-        bp[k + 1]
-    } else {
-        bp[0] + 2.0 * PI
-    };
+    let e = if k + 1 < bp.len() { bp[k + 1] } else { bp[0] + 2.0 * PI };
     (s, e)
 }
 
@@ -154,13 +149,7 @@ fn piece_index(bp: &[f64], phi: f64) -> usize {
 
 /// Bracketed, safeguarded Newton for an increasing function: `f(a) ≤ 0 ≤ f(b)`. `eval`
 /// returns (f, f′). Returns the best root estimate (never leaves `[a, b]`).
-fn solve_increasing(
-    mut a: f64,
-    mut b: f64,
-    mut fa: f64,
-    mut fb: f64,
-    mut eval: impl FnMut(f64) -> (f64, f64),
-) -> f64 {
+fn solve_increasing(mut a: f64, mut b: f64, mut fa: f64, mut fb: f64, mut eval: impl FnMut(f64) -> (f64, f64)) -> f64 {
     if fa == 0.0 {
         return a;
     }
@@ -169,11 +158,7 @@ fn solve_increasing(
     }
     if !(fa < 0.0 && fb > 0.0) {
         // Not a proper bracket (NaN or rounding): the end closer to zero.
-        return if fa.abs() <= fb.abs() || fb.is_nan() {
-            a
-        } else {
-            b
-        };
+        return if fa.abs() <= fb.abs() || fb.is_nan() { a } else { b };
     }
     let (mut best_x, mut best_f) = if -fa < fb { (a, -fa) } else { (b, fb) };
     // Regula falsi start.
@@ -276,10 +261,7 @@ pub(crate) fn flat_pieces(c: &dyn ConvexCurve) -> Vec<FlatPiece> {
         let samples = [0.25, 0.5, 0.75].map(|t| c.eval(s + t * (e - s)));
         let n0 = samples[1].normal;
         let flat = samples.iter().all(|cp| {
-            cp.is_finite()
-                && cp.d_normal.length() <= 1e-12
-                && (cp.normal - n0).length() <= 1e-12
-                && cp.speed() > 0.0
+            cp.is_finite() && cp.d_normal.length() <= 1e-12 && (cp.normal - n0).length() <= 1e-12 && cp.speed() > 0.0
         });
         if !flat {
             continue;
@@ -311,22 +293,14 @@ fn support_and_curvature(c: &dyn ConvexCurve, n: Vector) -> (Vector, f64) {
     }
     let cp = c.eval(lo);
     let w = cp.normal_turn_rate();
-    let rho = if w > 0.0 {
-        cp.speed() / w
-    } else {
-        f64::INFINITY
-    };
+    let rho = if w > 0.0 { cp.speed() / w } else { f64::INFINITY };
     (p, rho)
 }
 
 /// A tangent segment centred on `p` (outward normal `n`), of half-length set by the radius of
 /// curvature `rho` and the size `size`.
 fn tangent_feature(p: Vector, n: Vector, rho: f64, size: f64, out: &mut PolygonalFeature) {
-    let size = if size.is_finite() && size > 0.0 {
-        size
-    } else {
-        1.0
-    };
+    let size = if size.is_finite() && size > 0.0 { size } else { 1.0 };
     let mut half = TANGENT_FEATURE_REL * size;
     if rho.is_finite() && rho >= 0.0 {
         half = half.min(0.25 * rho);
@@ -358,22 +332,14 @@ fn flat_feature(f: &FlatPiece, p: Vector, size: f64, out: &mut PolygonalFeature)
     let k = f.index;
     *out = PolygonalFeature {
         vertices,
-        vids: [
-            PackedFeatureId::vertex(2 * k + 2),
-            PackedFeatureId::vertex(2 * k + 3),
-        ],
+        vids: [PackedFeatureId::vertex(2 * k + 2), PackedFeatureId::vertex(2 * k + 3)],
         fid: PackedFeatureId::face(k + 1),
         num_vertices: 2,
     };
 }
 
 /// The polygonal feature of a curve with flat pieces `flats` in direction `dir`.
-fn curve_feature(
-    c: &dyn ConvexCurve,
-    flats: &[FlatPiece],
-    dir: Vector,
-    out: &mut PolygonalFeature,
-) {
+fn curve_feature(c: &dyn ConvexCurve, flats: &[FlatPiece], dir: Vector, out: &mut PolygonalFeature) {
     let n = unit_or_x(dir);
     let size = c.bounding_radius();
     let cos_max = FLAT_FEATURE_MAX_ANGLE.cos();
@@ -417,14 +383,7 @@ struct CurveHit {
 
 /// The root of f(φ) = P(φ)·m − c0 on the arc `[a, b]` on which it is monotone (increasing when
 /// `sign = 1`, decreasing when `sign = −1`).
-fn ray_arc_root(
-    c: &dyn ConvexCurve,
-    m: Vector,
-    c0: f64,
-    a: f64,
-    b: f64,
-    sign: f64,
-) -> (f64, CurvePoint) {
+fn ray_arc_root(c: &dyn ConvexCurve, m: Vector, c0: f64, a: f64, b: f64, sign: f64) -> (f64, CurvePoint) {
     let f = |phi: f64| {
         let cp = c.eval(phi);
         (sign * (cp.point.dot(m) - c0), sign * cp.d_point.dot(m))
@@ -543,8 +502,7 @@ fn curve_project(c: &dyn ConvexCurve, x: Vector) -> CurveProjection {
                 let root = solve_increasing(phi_a, phi_b, -g_a, -g_b, |phi| {
                     let cp = c.eval(phi);
                     let g = (x - cp.point).dot(perp(cp.normal));
-                    let dg =
-                        -cp.d_point.dot(perp(cp.normal)) + (x - cp.point).dot(perp(cp.d_normal));
+                    let dg = -cp.d_point.dot(perp(cp.normal)) + (x - cp.point).dot(perp(cp.d_normal));
                     (-g, -dg)
                 });
                 consider(root, c.eval(root));
@@ -835,11 +793,7 @@ impl RayCast for Ellipse {
                 return None;
             }
             let p = ellipse_closest_point(a, b, o);
-            return Some(RayIntersection::new(
-                0.0,
-                -self.normal_at_point(p),
-                FeatureId::Face(0),
-            ));
+            return Some(RayIntersection::new(0.0, -self.normal_at_point(p), FeatureId::Face(0)));
         }
         // Scale the quadratic to avoid under/overflow for tiny or huge directions.
         let scale = d2.x.abs().max(d2.y.abs());
@@ -855,11 +809,7 @@ impl RayCast for Ellipse {
         }
         let sq = disc.sqrt();
         let q = -(bb + sq.copysign(bb));
-        let (r1, r2) = if q == 0.0 {
-            (0.0, 0.0)
-        } else {
-            (q / aa, cc / q)
-        };
+        let (r1, r2) = if q == 0.0 { (0.0, 0.0) } else { (q / aa, cc / q) };
         let (t_in, t_out) = (r1.min(r2) / scale, r1.max(r2) / scale);
         let hit = if !inside {
             let p = o + d * t_in;
@@ -1126,11 +1076,7 @@ impl RayCast for RoundedPolygon {
             return inside.then(|| RayIntersection::new(0.0, -nrm, f));
         }
         let hit = curve_ray(self, ray, max_time_of_impact, solid)?;
-        Some(RayIntersection::new(
-            hit.toi,
-            hit.normal,
-            self.feature_of_phi(hit.phi),
-        ))
+        Some(RayIntersection::new(hit.toi, hit.normal, self.feature_of_phi(hit.phi)))
     }
 }
 
@@ -1334,9 +1280,7 @@ impl Shape for CapsuleEllipse {
         }
         let (r1, r2, r3) = self.params();
         let s = scale.x;
-        Some(Box::new(
-            CapsuleEllipse::try_new(r1 * s, r2 * s, r3 * s).ok()?,
-        ))
+        Some(Box::new(CapsuleEllipse::try_new(r1 * s, r2 * s, r3 * s).ok()?))
     }
 
     fn mass_properties(&self, density: Real) -> MassProperties {
@@ -1489,11 +1433,7 @@ mod tests {
         assert!((w.iter().sum::<f64>() - 2.0).abs() < 1e-14);
         for deg in 0..24 {
             let q: f64 = x.iter().zip(w.iter()).map(|(x, w)| w * x.powi(deg)).sum();
-            let exact = if deg % 2 == 1 {
-                0.0
-            } else {
-                2.0 / (deg as f64 + 1.0)
-            };
+            let exact = if deg % 2 == 1 { 0.0 } else { 2.0 / (deg as f64 + 1.0) };
             assert!((q - exact).abs() < 1e-14, "degree {deg}: {q} vs {exact}");
         }
     }
@@ -1545,12 +1485,7 @@ mod tests {
 
     #[test]
     fn capsule_ellipse_moments_match_green_quadrature() {
-        for (r1, r2, r3) in [
-            (0.5, 1.0, 0.8),
-            (1.0, 0.1, 3.0),
-            (0.2, 2.0, 0.05),
-            (1.0, 1.0, 1.0),
-        ] {
+        for (r1, r2, r3) in [(0.5, 1.0, 0.8), (1.0, 0.1, 3.0), (0.2, 2.0, 0.05), (1.0, 1.0, 1.0)] {
             let c = CapsuleEllipse::new(r1, r2, r3);
             let exact = capsule_ellipse_moments(r1, r2, r3);
             let quad = curve_moments(&c);
@@ -1574,22 +1509,16 @@ mod tests {
             for k in 0..200 {
                 let ang = 0.031 * k as f64;
                 for rad in [0.0, 1e-4, 0.3, 0.999, 1.0, 1.001, 2.0, 50.0] {
-                    let x = Vector::new(a * rad * ang.cos(), b * rad * ang.sin())
-                        + Vector::new(0.0, 1e-3 * (k % 3) as f64);
+                    let x =
+                        Vector::new(a * rad * ang.cos(), b * rad * ang.sin()) + Vector::new(0.0, 1e-3 * (k % 3) as f64);
                     let p = ellipse_closest_point(a, b, x);
                     // On the ellipse.
                     let g = (p.x / a).powi(2) + (p.y / b).powi(2) - 1.0;
-                    assert!(
-                        g.abs() < 1e-12,
-                        "off the ellipse: {g} a={a} b={b} x={x} p={p}"
-                    );
+                    assert!(g.abs() < 1e-12, "off the ellipse: {g} a={a} b={b} x={x} p={p}");
                     // x − p along the normal at p.
                     let n = e.normal_at_point(p);
                     let d = x - p;
-                    assert!(
-                        cross(d, n).abs() <= 1e-12 * a.max(b),
-                        "not a foot: {x} -> {p}"
-                    );
+                    assert!(cross(d, n).abs() <= 1e-12 * a.max(b), "not a foot: {x} -> {p}");
                 }
             }
         }

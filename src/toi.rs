@@ -598,24 +598,81 @@ impl<'a> Tracker<'a> {
         }
     }
 
-    /// At a point within tolerance of the target: one Newton step on D from the safe side, kept
-    /// only if its distance is within [δ − 1e-12·s, δ + tol].
+    /// At a safe point within tolerance of the target, sharpens the contact time: Newton steps
+    /// on D from the safe side (a few, while they stay above the target), then, if one lands
+    /// beyond the target, Illinois regula falsi on D(t) − δ between the last safe point and that
+    /// point. The answer is the sample closest to the target among those with
+    /// D ≥ δ − 1e-12·s (the safe point itself when nothing better is found). The bracket is
+    /// ~gap/|D'| wide, far inside what the guard would step over, so the root found is the first.
     fn refine_hit<T: Tracer>(&mut self, t: f64, phi: f64, j: PairJet, trace: &mut T) -> TimeOfImpact {
         let delta = self.opts.target_distance;
-        let gap = j.fwd.v - delta;
-        let d1 = j.fwd.t;
-        if d1 < 0.0 && gap > 0.0 {
-            let t_n = (t - gap / d1).min(self.t1);
-            if let Some((phi_n, jf)) = self.correct(t_n, phi, &mut NoTrace) {
-                let g = jf.fwd.v - delta;
-                if g >= -1e-12 * self.size && g <= self.tol_d && jf.side.p > 0.0 {
-                    trace.push(TraceEvent::Impact { phi: phi_n, t: t_n });
-                    return self.result(ToiStatus::Hit, t_n, &jf);
+        let floor = -1e-12 * self.size;
+        let fine = 1e-15 * self.size;
+        let mut best = (t, phi, j);
+        let better = |best: &(f64, f64, PairJet), jj: &PairJet| {
+            let g = jj.fwd.v - delta;
+            g >= floor && g.abs() < (best.2.fwd.v - delta).abs() && jj.side.p > 0.0
+        };
+        // Newton from the safe side.
+        let (mut ts, mut ps, mut js) = (t, phi, j);
+        let mut beyond: Option<(f64, f64, f64)> = None;
+        for _ in 0..8 {
+            let gap = js.fwd.v - delta;
+            let d1 = js.fwd.t;
+            if gap <= fine || d1 >= 0.0 {
+                break;
+            }
+            let t_n = (ts - gap / d1).min(self.t1);
+            if t_n <= ts {
+                break;
+            }
+            let Some((phi_n, jn)) = self.correct(t_n, ps, &mut NoTrace) else { break };
+            if better(&best, &jn) {
+                best = (t_n, phi_n, jn);
+            }
+            let gn = jn.fwd.v - delta;
+            if gn < 0.0 {
+                beyond = Some((t_n, phi_n, gn));
+                break;
+            }
+            (ts, ps, js) = (t_n, phi_n, jn);
+        }
+        if let Some((tb0, pb, gb0)) = beyond.filter(|b| b.2 < -fine) {
+            // Illinois regula falsi between (ts, gap > 0) and (tb, gb < 0).
+            let (mut ta, mut ga, mut tb, mut gb) = (ts, js.fwd.v - delta, tb0, gb0);
+            let mut side = 0i8;
+            let mut p = pb;
+            for _ in 0..40 {
+                let tm = (ta * gb - tb * ga) / (gb - ga);
+                if !(tm > ta && tm < tb) {
+                    break;
+                }
+                let Some((pm, jm)) = self.correct(tm, p, &mut NoTrace) else { break };
+                p = pm;
+                if better(&best, &jm) {
+                    best = (tm, pm, jm);
+                }
+                let gm = jm.fwd.v - delta;
+                if gm.abs() <= fine {
+                    break;
+                }
+                if gm > 0.0 {
+                    (ta, ga) = (tm, gm);
+                    if side == 1 {
+                        gb *= 0.5;
+                    }
+                    side = 1;
+                } else {
+                    (tb, gb) = (tm, gm);
+                    if side == -1 {
+                        ga *= 0.5;
+                    }
+                    side = -1;
                 }
             }
         }
-        trace.push(TraceEvent::Impact { phi, t });
-        self.result(ToiStatus::Hit, t, &j)
+        trace.push(TraceEvent::Impact { phi: best.1, t: best.0 });
+        self.result(ToiStatus::Hit, best.0, &best.2)
     }
 
     /// From a separating contact at t, steps forward until the distance exceeds the target

@@ -1,0 +1,495 @@
+//! Contact manifolds for rapier: [`SmoothDispatcher`] as parry's `PersistentQueryDispatcher`.
+//!
+//! rapier's narrow phase asks its dispatcher for *contact manifolds* (the persistent contact
+//! points the solver works on), not for single contacts. This module builds them:
+//!
+//! * **Pairs the dispatcher answers itself** (see [`crate::dispatcher`]): the manifold comes from
+//!   the exact stationary distance ([`SmoothDispatcher::signed_distance`]). Such a pair has a
+//!   strictly convex side, so the contact is a single point, added when the signed distance is
+//!   at most the prediction distance. The one exception is a half-space against a curve with a
+//!   flat piece (a [`crate::RoundedPolygon`] edge, the segment of a [`crate::CapsuleEllipse`])
+//!   facing it within [`FLAT_FEATURE_MAX_ANGLE`]: the manifold then has two points, the ends of
+//!   the flat piece (the end nearer the plane replaced by the support point once the support
+//!   point has left the piece), each with its exact distance, so that a body can rest on a flat
+//!   side. Pairs where neither side is strictly convex (e.g. a rounded polygon on a box) are
+//!   parry's, which clips the shapes' polygonal features and returns up to two points.
+//! * **Composite shapes** (compound, polyline, trimesh, heightfield, voxels) on either side:
+//!   parry's composite helpers, called with *this* dispatcher so that every sub-pair comes back
+//!   here ([`PersistentQueryDispatcher::contact_manifold_convex_convex`]). Normal constraints
+//!   (trimesh / heightfield pseudo-normals) are applied to the smooth contact's normals.
+//! * **Everything else** goes to parry's `DefaultQueryDispatcher`; so does a pair of ours whose
+//!   stationary distance failed (parry then works through the shapes' polygonal feature maps).
+//!
+//! # Feature ids (warm starting)
+//!
+//! rapier transfers the previous step's impulses to a new contact with the same pair of
+//! feature ids. The id of a contact on a curve is derived from the piece of the curve (between
+//! breakpoints, see [`ConvexCurve::breakpoints`]) that holds the witness point: `face(k)` when
+//! piece k is flat, `vertex(2k)` when it is curved (a smooth curve such as an ellipse has one
+//! piece: every contact is `vertex(0)`, so a rolling contact keeps its impulse); the ends of a
+//! flat piece are `vertex(2j + 1)` with j the index of the breakpoint. A half-space contributes
+//! `face(0)`. The ids are therefore stable while a contact stays on the same piece, and the two
+//! points of a two-point manifold have distinct ids.
+//!
+//! No contact caching: the manifold is recomputed at every call (parry's polygonal path reuses
+//! contacts while the pose changes by less than its thresholds, which makes smooth bodies roll
+//! over small facets).
+
+use crate::curve::ConvexCurve;
+use crate::dispatcher::{curve_of, own_curve, CurveOf};
+use crate::math::{Pose, Real, Vector};
+use crate::parry_shape::{flat_pieces, FLAT_FEATURE_MAX_ANGLE};
+use crate::stationary::StationaryDistance;
+use crate::SmoothDispatcher;
+use parry2d_f64::query::details::{
+    contact_manifolds_composite_shape_composite_shape, contact_manifolds_composite_shape_shape,
+    contact_manifolds_heightfield_composite_shape, contact_manifolds_heightfield_shape_shapes,
+    contact_manifolds_trimesh_shape_shapes, contact_manifolds_voxels_ball_shapes,
+    contact_manifolds_voxels_composite_shape_shapes, contact_manifolds_voxels_shape_shapes,
+    contact_manifolds_voxels_voxels_shapes, NormalConstraints, NormalConstraintsPair,
+};
+use parry2d_f64::query::{
+    ContactManifold, ContactManifoldsWorkspace, DefaultQueryDispatcher, PersistentQueryDispatcher,
+    TrackedContact, Unsupported,
+};
+use parry2d_f64::shape::{HalfSpace, PackedFeatureId, Shape, ShapeType};
+use core::f64::consts::PI;
+
+/// Index of the piece holding φ (pieces start at the breakpoints; the last one wraps).
+fn piece_index(bp: &[f64], phi: f64) -> usize {
+    if bp.is_empty() {
+        return 0;
+    }
+    let phi = crate::curve::wrap_phi(phi);
+    let k = bp.partition_point(|&b| b <= phi);
+    if k == 0 {
+        bp.len() - 1
+    } else {
+        k - 1
+    }
+}
+
+/// Whether piece `k` is flat (its normal does not turn at its middle).
+fn piece_is_flat(c: &dyn ConvexCurve, bp: &[f64], k: usize) -> bool {
+    let s = bp[k];
+    let e = if k + 1 < bp.len() { bp[k + 1] } else { bp[0] + 2.0 * PI };
+    if !(e > s) {
+        return false;
+    }
+    let cp = c.eval(0.5 * (s + e));
+    cp.is_finite() && cp.d_normal.length() <= 1e-12 && cp.speed() > 0.0
+}
+
+/// The feature id of the point of `c` whose outward normal is `n` (see the module docs).
+fn curve_fid(c: &dyn ConvexCurve, n: Vector) -> PackedFeatureId {
+    let bp = c.breakpoints();
+    if bp.is_empty() || !n.is_finite() {
+        return PackedFeatureId::vertex(0);
+    }
+    let (lo, hi) = c.phi_range_of_normal(n);
+    let k = piece_index(bp, 0.5 * (lo + hi));
+    if piece_is_flat(c, bp, k) {
+        PackedFeatureId::face(k as u32)
+    } else {
+        PackedFeatureId::vertex(2 * k as u32)
+    }
+}
+
+/// True when the bounding circles are further apart than `margin` (never for a half-space).
+fn far_apart(pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape, margin: Real) -> bool {
+    if g1.as_shape::<HalfSpace>().is_some() || g2.as_shape::<HalfSpace>().is_some() {
+        return false;
+    }
+    let b1 = g1.compute_local_bounding_sphere();
+    let b2 = g2.compute_bounding_sphere(pos12);
+    (b2.center - b1.center).length() - b1.radius - b2.radius > margin
+}
+
+/// Two contacts of a curve resting a flat piece on a half-space, in the curve's frame:
+/// `(point on the curve, id)` pairs; `None` when no flat piece faces the plane.
+fn flat_on_halfspace(c: &dyn ConvexCurve, nc: Vector, support: Vector) -> Option<[(Vector, PackedFeatureId); 2]> {
+    let flats = flat_pieces(c);
+    let cos_max = FLAT_FEATURE_MAX_ANGLE.cos();
+    let mut best = None;
+    let mut best_dot = cos_max;
+    for f in &flats {
+        let d = f.normal.dot(nc);
+        if d >= best_dot {
+            best_dot = d;
+            best = Some(*f);
+        }
+    }
+    let f = best?;
+    let nb = c.breakpoints().len().max(1) as u32;
+    let k = f.index;
+    let id_start = PackedFeatureId::vertex(2 * k + 1);
+    let id_end = PackedFeatureId::vertex(2 * ((k + 1) % nb) + 1);
+    // The support point replaces the end it has passed (it lies on a neighbouring piece).
+    let t = crate::math::perp(f.normal);
+    let (s0, s1, sp) = (f.start.dot(t), f.end.dot(t), support.dot(t));
+    let tol = 1e-12 * c.bounding_radius().abs().max(f64::MIN_POSITIVE);
+    let support_id = || curve_fid(c, nc);
+    Some(if sp > s1 + tol {
+        [(f.start, id_start), (support, support_id())]
+    } else if sp < s0 - tol {
+        [(support, support_id()), (f.end, id_end)]
+    } else {
+        [(f.start, id_start), (f.end, id_end)]
+    })
+}
+
+/// Fills `manifold` from the stationary distance of a pair this crate answers.
+#[allow(clippy::too_many_arguments)]
+fn manifold_from_distance<M, C: Default + Copy>(
+    pos12: &Pose,
+    g1: &dyn Shape,
+    g2: &dyn Shape,
+    sd: &StationaryDistance,
+    normal_constraints1: Option<&dyn NormalConstraints>,
+    normal_constraints2: Option<&dyn NormalConstraints>,
+    prediction: Real,
+    manifold: &mut ContactManifold<M, C>,
+) {
+    let old_points = manifold.points.clone();
+    manifold.clear();
+
+    let (mut n1, mut n2) = (sd.normal1, sd.normal2);
+    let constrained = normal_constraints1.is_some() || normal_constraints2.is_some();
+    if constrained
+        && !(normal_constraints1, normal_constraints2).project_local_normals(pos12, &mut n1, &mut n2)
+    {
+        // The contact is discarded by the normal constraints.
+        manifold.local_n1 = Vector::ZERO;
+        return;
+    }
+    manifold.local_n1 = n1;
+    manifold.local_n2 = n2;
+
+    // A curve with a flat piece on a half-space: two points.
+    let hs1 = g1.as_shape::<HalfSpace>();
+    let hs2 = g2.as_shape::<HalfSpace>();
+    if hs1.is_some() != hs2.is_some() && !constrained {
+        let curve_first = hs2.is_some();
+        let curve_shape = if curve_first { g1 } else { g2 };
+        if let Some(curve) = curve_of(curve_shape) {
+            let (nc, support) = if curve_first { (n1, sd.point1) } else { (n2, sd.point2) };
+            if let Some(points) = flat_on_halfspace(curve.get(), nc, support) {
+                // Pose of the half-space in the curve's frame; the plane's normal is −nc.
+                let pos_ch = if curve_first { *pos12 } else { pos12.inverse() };
+                let m = -nc;
+                let o = pos_ch.translation;
+                for (p, id) in points {
+                    let dist = m.dot(p - o);
+                    if dist > prediction || !dist.is_finite() {
+                        continue;
+                    }
+                    let on_plane = pos_ch.inverse_transform_point(p - m * dist);
+                    manifold.points.push(TrackedContact::flipped(
+                        p,
+                        on_plane,
+                        id,
+                        PackedFeatureId::face(0),
+                        dist,
+                        !curve_first,
+                    ));
+                }
+                manifold.match_contacts(&old_points);
+                return;
+            }
+        }
+    }
+
+    let c1 = curve_of(g1);
+    let c2 = curve_of(g2);
+    let strict = |c: &Option<CurveOf>| c.as_ref().is_some_and(|c| c.get().is_strictly_convex());
+    // The witness on a flat piece is not unique (any point of the piece maximises the
+    // distance): the contact point is the one facing the strictly convex side's witness, which
+    // is unique. p2 − p1 = dist · n1 at the solution, so this only moves a flat-piece witness.
+    let (mut p1, mut p2) = (sd.point1, sd.point2);
+    let mut dist = sd.distance;
+    if n1 != sd.normal1 {
+        // The normal constraints moved the normal: the separation along the new one.
+        dist = (pos12.transform_point(p2) - p1).dot(n1);
+    }
+    if strict(&c2) || g1.as_shape::<HalfSpace>().is_some() {
+        p1 = pos12.transform_point(p2) - n1 * dist;
+    } else if strict(&c1) || g2.as_shape::<HalfSpace>().is_some() {
+        p2 = pos12.inverse_transform_point(p1 + n1 * dist);
+    }
+    if dist <= prediction && dist.is_finite() && p1.is_finite() && p2.is_finite() {
+        let fid = |g: &dyn Shape, c: &Option<CurveOf>, n: Vector| match c {
+            Some(c) => curve_fid(c.get(), n),
+            None if g.as_shape::<HalfSpace>().is_some() => PackedFeatureId::face(0),
+            None => PackedFeatureId::UNKNOWN,
+        };
+        let fid1 = fid(g1, &c1, sd.normal1);
+        let fid2 = fid(g2, &c2, sd.normal2);
+        manifold
+            .points
+            .push(TrackedContact::new(p1, p2, fid1, fid2, dist));
+    }
+    manifold.match_contacts(&old_points);
+}
+
+/// Whether one side is a shape parry decomposes (composite, trimesh, heightfield, voxels).
+fn is_composite_like(g: &dyn Shape) -> bool {
+    g.as_composite_shape().is_some()
+        || matches!(
+            g.shape_type(),
+            ShapeType::TriMesh | ShapeType::HeightField | ShapeType::Voxels
+        )
+}
+
+impl<M, C> PersistentQueryDispatcher<M, C> for SmoothDispatcher
+where
+    M: Default + Clone + Send + Sync,
+    C: Default + Copy + Send + Sync,
+{
+    fn contact_manifolds(
+        &self,
+        pos12: &Pose,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+        prediction: Real,
+        manifolds: &mut Vec<ContactManifold<M, C>>,
+        workspace: &mut Option<ContactManifoldsWorkspace>,
+    ) -> Result<(), Unsupported> {
+        if is_composite_like(g1) || is_composite_like(g2) {
+            composite_manifolds(self, pos12, g1, g2, prediction, manifolds, workspace);
+            return Ok(());
+        }
+        if manifolds.is_empty() {
+            manifolds.push(ContactManifold::new());
+        }
+        manifolds.truncate(1);
+        let manifold = &mut manifolds[0];
+        manifold.subshape1 = 0;
+        manifold.subshape2 = 0;
+        manifold.subshape_poses = None;
+        self.contact_manifold_convex_convex(pos12, g1, g2, None, None, prediction, manifold)
+    }
+
+    fn contact_manifold_convex_convex(
+        &self,
+        pos12: &Pose,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+        normal_constraints1: Option<&dyn NormalConstraints>,
+        normal_constraints2: Option<&dyn NormalConstraints>,
+        prediction: Real,
+        manifold: &mut ContactManifold<M, C>,
+    ) -> Result<(), Unsupported> {
+        let ours = own_curve(g1).is_some() || own_curve(g2).is_some();
+        if ours && far_apart(pos12, g1, g2, prediction) {
+            manifold.clear();
+            return Ok(());
+        }
+        let sd = if ours { self.signed_distance(pos12, g1, g2) } else { None };
+        match sd {
+            Some(Ok(sd)) => {
+                manifold_from_distance(
+                    pos12,
+                    g1,
+                    g2,
+                    &sd,
+                    normal_constraints1,
+                    normal_constraints2,
+                    prediction,
+                    manifold,
+                );
+                Ok(())
+            }
+            // Not ours, or our distance failed: parry (through the polygonal feature maps).
+            _ => DefaultQueryDispatcher.contact_manifold_convex_convex(
+                pos12,
+                g1,
+                g2,
+                normal_constraints1,
+                normal_constraints2,
+                prediction,
+                manifold,
+            ),
+        }
+    }
+}
+
+/// parry's `DefaultQueryDispatcher::contact_manifolds` for composite-like shapes, with `d` as
+/// the dispatcher of the sub-pairs.
+fn composite_manifolds<M, C>(
+    d: &SmoothDispatcher,
+    pos12: &Pose,
+    g1: &dyn Shape,
+    g2: &dyn Shape,
+    prediction: Real,
+    manifolds: &mut Vec<ContactManifold<M, C>>,
+    workspace: &mut Option<ContactManifoldsWorkspace>,
+) where
+    M: Default + Clone + Send + Sync,
+    C: Default + Copy + Send + Sync,
+{
+    let composite1 = g1.as_composite_shape();
+    let composite2 = g2.as_composite_shape();
+    if let (Some(c1), Some(c2)) = (composite1, composite2) {
+        contact_manifolds_composite_shape_composite_shape(d, pos12, c1, c2, prediction, manifolds, workspace);
+        return;
+    }
+    match (g1.shape_type(), g2.shape_type()) {
+        (ShapeType::TriMesh, _) | (_, ShapeType::TriMesh) => {
+            contact_manifolds_trimesh_shape_shapes(d, pos12, g1, g2, prediction, manifolds, workspace);
+        }
+        (ShapeType::HeightField, _) => match (composite2, g1.as_heightfield()) {
+            (Some(c2), Some(hf1)) => contact_manifolds_heightfield_composite_shape(
+                d,
+                pos12,
+                &pos12.inverse(),
+                hf1,
+                c2,
+                prediction,
+                manifolds,
+                workspace,
+                false,
+            ),
+            _ => contact_manifolds_heightfield_shape_shapes(d, pos12, g1, g2, prediction, manifolds, workspace),
+        },
+        (_, ShapeType::HeightField) => match (composite1, g2.as_heightfield()) {
+            (Some(c1), Some(hf2)) => contact_manifolds_heightfield_composite_shape(
+                d,
+                &pos12.inverse(),
+                pos12,
+                hf2,
+                c1,
+                prediction,
+                manifolds,
+                workspace,
+                true,
+            ),
+            _ => contact_manifolds_heightfield_shape_shapes(d, pos12, g1, g2, prediction, manifolds, workspace),
+        },
+        (ShapeType::Voxels, ShapeType::Voxels) => {
+            contact_manifolds_voxels_voxels_shapes(d, pos12, g1, g2, prediction, manifolds, workspace)
+        }
+        (ShapeType::Voxels, ShapeType::Ball) | (ShapeType::Ball, ShapeType::Voxels) => {
+            contact_manifolds_voxels_ball_shapes(pos12, g1, g2, prediction, manifolds)
+        }
+        (ShapeType::Voxels, _) | (_, ShapeType::Voxels) => {
+            if composite1.is_some() || composite2.is_some() {
+                contact_manifolds_voxels_composite_shape_shapes(d, pos12, g1, g2, prediction, manifolds, workspace)
+            } else {
+                contact_manifolds_voxels_shape_shapes(d, pos12, g1, g2, prediction, manifolds, workspace)
+            }
+        }
+        _ => {
+            if let Some(c1) = composite1 {
+                contact_manifolds_composite_shape_shape(d, pos12, c1, g2, prediction, manifolds, workspace, false);
+            } else if let Some(c2) = composite2 {
+                contact_manifolds_composite_shape_shape(
+                    d,
+                    &pos12.inverse(),
+                    c2,
+                    g1,
+                    prediction,
+                    manifolds,
+                    workspace,
+                    true,
+                );
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{Ellipse, RoundedPolygon};
+    use parry2d_f64::shape::{Compound, Cuboid, SharedShape};
+
+    type Manifolds = Vec<ContactManifold<(), ()>>;
+
+    fn manifolds(g1: &dyn Shape, g2: &dyn Shape, pos12: &Pose, prediction: f64) -> Manifolds {
+        let mut m = Vec::new();
+        let mut ws = None;
+        PersistentQueryDispatcher::<(), ()>::contact_manifolds(
+            &SmoothDispatcher::default(),
+            pos12,
+            g1,
+            g2,
+            prediction,
+            &mut m,
+            &mut ws,
+        )
+        .unwrap();
+        m
+    }
+
+    #[test]
+    fn ellipse_on_box_is_one_exact_point() {
+        let e = Ellipse::new(0.5, 0.2);
+        let b = Cuboid::new(Vector::new(2.0, 0.5));
+        // Ellipse 0.19 above the box top (penetration 0.01).
+        let pos12 = Pose::translation(0.1, 0.69);
+        let m = manifolds(&b, &e, &pos12, 0.0);
+        assert_eq!(m.len(), 1);
+        assert_eq!(m[0].points.len(), 1);
+        let p = &m[0].points[0];
+        assert!((p.dist + 0.01).abs() < 1e-12, "{}", p.dist);
+        assert!((m[0].local_n1 - Vector::Y).length() < 1e-12);
+        assert!((m[0].local_n2 + Vector::Y).length() < 1e-12);
+        assert!((p.local_p2 - Vector::new(0.0, -0.2)).length() < 1e-9);
+        assert!(p.fid1.is_face());
+        assert_eq!(p.fid2, PackedFeatureId::vertex(0));
+        // Swapped order gives the mirrored manifold.
+        let m2 = manifolds(&e, &b, &pos12.inverse(), 0.0);
+        let q = &m2[0].points[0];
+        assert!((q.dist - p.dist).abs() < 1e-12);
+        assert!((q.local_p1 - p.local_p2).length() < 1e-9);
+        assert_eq!(q.fid2, p.fid1);
+        // Apart beyond the prediction: no point; within it: one.
+        let far = Pose::translation(0.0, 0.75);
+        assert!(manifolds(&b, &e, &far, 0.01).iter().all(|m| m.points.is_empty()));
+        assert_eq!(manifolds(&b, &e, &far, 0.1)[0].points.len(), 1);
+    }
+
+    #[test]
+    fn rounded_polygon_on_halfspace_has_two_points() {
+        let hs = HalfSpace::new(Vector::Y);
+        let sq = RoundedPolygon::regular(4, 0.5, 0.05);
+        // The regular square's edges: rotate so an edge faces down.
+        let verts = sq.vertices();
+        let (a, b) = (verts[0], verts[1]);
+        let ang = (b - a).y.atan2((b - a).x);
+        let lowest = verts.iter().map(|v| v.length()).fold(0.0, f64::max);
+        let _ = lowest;
+        let pos12 = Pose::new(Vector::new(0.0, 1.0), -ang);
+        let m = manifolds(&hs, &sq, &pos12, 0.0);
+        let m = &m[0];
+        // Either edge facing down: check we got 2 points when lowered into contact.
+        let d0 = m.points.len();
+        let mut pose = pos12;
+        let min = {
+            let sd = SmoothDispatcher::default().signed_distance(&pose, &hs, &sq).unwrap().unwrap();
+            sd.distance
+        };
+        pose.translation.y -= min + 1e-3;
+        let m = manifolds(&hs, &sq, &pose, 0.0);
+        assert_eq!(d0, 0);
+        assert_eq!(m[0].points.len(), 2, "{:?}", m[0].points);
+        for p in &m[0].points {
+            assert!((p.dist + 1e-3).abs() < 1e-9, "{}", p.dist);
+        }
+        assert_ne!(m[0].points[0].fid2, m[0].points[1].fid2);
+    }
+
+    #[test]
+    fn ellipse_inside_compound_gets_contacts() {
+        let e = SharedShape::new(Ellipse::new(0.5, 0.2));
+        let compound = Compound::new(vec![(Pose::translation(1.0, 0.0), e)]);
+        let b = Cuboid::new(Vector::new(2.0, 0.5));
+        let pos12 = Pose::translation(-1.0, 0.69);
+        let m = manifolds(&b, &compound, &pos12, 0.0);
+        let pts: Vec<_> = m.iter().flat_map(|m| m.points.iter()).collect();
+        assert_eq!(pts.len(), 1);
+        assert!((pts[0].dist + 0.01).abs() < 1e-12);
+        assert_eq!(m.iter().find(|m| !m.points.is_empty()).unwrap().subshape2, 0);
+    }
+}
+
