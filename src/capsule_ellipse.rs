@@ -14,7 +14,7 @@ use crate::curve::{wrap_phi, ConvexCurve, CurvePoint};
 use crate::error::{positive, ShapeError};
 use crate::jet::Dual2;
 use crate::math::Vector;
-use core::f64::consts::{FRAC_PI_2, PI};
+use core::f64::consts::FRAC_PI_2;
 
 /// Shape1 of Appendix A with parameters r1, r2, r3.
 #[derive(Clone, Debug, PartialEq)]
@@ -162,6 +162,7 @@ impl ConvexCurve for CapsuleEllipse {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use core::f64::consts::PI;
 
     #[test]
     fn appendix_a_piece_ends_are_at_arctan_and_half_pi_with_continuous_point_and_normal() {

@@ -456,22 +456,15 @@ mod tests {
         // The regular square's edges: rotate so an edge faces down.
         let verts = sq.vertices();
         let (a, b) = (verts[0], verts[1]);
+        // Rotate the square so that its edge a→b is horizontal, at the bottom (ccw order).
         let ang = (b - a).y.atan2((b - a).x);
-        let lowest = verts.iter().map(|v| v.length()).fold(0.0, f64::max);
-        let _ = lowest;
         let pos12 = Pose::new(Vector::new(0.0, 1.0), -ang);
-        let m = manifolds(&hs, &sq, &pos12, 0.0);
-        let m = &m[0];
-        // Either edge facing down: check we got 2 points when lowered into contact.
-        let d0 = m.points.len();
+        assert!(manifolds(&hs, &sq, &pos12, 0.0)[0].points.is_empty());
+        // Lower it into contact, 10⁻³ deep.
         let mut pose = pos12;
-        let min = {
-            let sd = SmoothDispatcher::default().signed_distance(&pose, &hs, &sq).unwrap().unwrap();
-            sd.distance
-        };
-        pose.translation.y -= min + 1e-3;
+        let gap = SmoothDispatcher::default().signed_distance(&pose, &hs, &sq).unwrap().unwrap().distance;
+        pose.translation.y -= gap + 1e-3;
         let m = manifolds(&hs, &sq, &pose, 0.0);
-        assert_eq!(d0, 0);
         assert_eq!(m[0].points.len(), 2, "{:?}", m[0].points);
         for p in &m[0].points {
             assert!((p.dist + 1e-3).abs() < 1e-9, "{}", p.dist);
@@ -491,5 +484,30 @@ mod tests {
         assert!((pts[0].dist + 0.01).abs() < 1e-12);
         assert_eq!(m.iter().find(|m| !m.points.is_empty()).unwrap().subshape2, 0);
     }
-}
 
+    #[test]
+    fn contact_on_a_flat_face_faces_the_smooth_witness() {
+        // The stationary distance may put the witness of a flat piece anywhere on it (e.g. the
+        // box corner 20 units away); the manifold point must face the ellipse's witness.
+        let e = Ellipse::new(0.5, 0.2);
+        let b = Cuboid::new(Vector::new(20.0, 0.5));
+        for i in 0..40 {
+            let ang = -3.0 + 0.15 * i as f64;
+            let pos12 = Pose::new(Vector::new(0.3, 0.9 - 0.01 * i as f64), ang);
+            for flip in [false, true] {
+                let m = if flip {
+                    manifolds(&e, &b, &pos12.inverse(), 0.1)
+                } else {
+                    manifolds(&b, &e, &pos12, 0.1)
+                };
+                for p in &m[0].points {
+                    let (pb, pe) = if flip { (p.local_p2, p.local_p1) } else { (p.local_p1, p.local_p2) };
+                    let pe_in_b = pos12.transform_point(pe);
+                    assert!((pb.x - pe_in_b.x).abs() < 1e-9, "{pb:?} {pe_in_b:?}");
+                    assert!((pb.y - 0.5).abs() < 1e-12);
+                    assert!((pe_in_b.y - 0.5 - p.dist).abs() < 1e-9);
+                }
+            }
+        }
+    }
+}

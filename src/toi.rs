@@ -626,7 +626,9 @@ impl<'a> Tracker<'a> {
             if t_n <= ts {
                 break;
             }
-            let Some((phi_n, jn)) = self.correct(t_n, ps, &mut NoTrace) else { break };
+            let Some((phi_n, jn)) = self.correct(t_n, ps, &mut NoTrace) else {
+                break;
+            };
             if better(&best, &jn) {
                 best = (t_n, phi_n, jn);
             }
@@ -647,7 +649,9 @@ impl<'a> Tracker<'a> {
                 if !(tm > ta && tm < tb) {
                     break;
                 }
-                let Some((pm, jm)) = self.correct(tm, p, &mut NoTrace) else { break };
+                let Some((pm, jm)) = self.correct(tm, p, &mut NoTrace) else {
+                    break;
+                };
                 p = pm;
                 if better(&best, &jm) {
                     best = (tm, pm, jm);
