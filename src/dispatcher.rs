@@ -17,6 +17,14 @@
 //! in each shape's local frame, `distance` is 0 for touching or penetrating shapes, a cast hit's
 //! status is `Converged`, `PenetratingOrWithinTargetDist` or `OutOfIterations`
 //! ([`crate::ToiStatus::to_parry`]).
+//!
+//! One deliberate difference, for rapier: with `stop_at_penetration = false` (rapier's CCD of
+//! solid bodies) and shapes already in contact and approaching at the start, the nonlinear cast
+//! reports a hit at `start_time + START_NUDGE·(end_time − start_time)` when the approach over the
+//! window exceeds a quarter of the thinner shape's `ccd_thickness`, and no hit otherwise. rapier
+//! discards hits at exactly the start time, so answering the start time (as
+//! [`crate::time_of_impact`] does) would let a fast body in shallow contact pass through a thin
+//! wall; a slow approach (resting, sliding) is left to the contact solver.
 
 use crate::curve::ConvexCurve;
 use crate::halfspace::{halfspace_distance, time_of_impact_halfspace};
@@ -263,6 +271,26 @@ impl SmoothDispatcher {
     }
 }
 
+/// Fraction of the window at which an approaching start contact is reported to rapier (module
+/// docs): far below any motion rapier resolves, yet strictly after the start time.
+pub const START_NUDGE: f64 = 1e-9;
+
+/// The rapier rule for an approaching contact at the start (module docs).
+fn start_contact_rule(r: TimeOfImpact, stop: bool, t0: Real, t1: Real, thickness: Real) -> Option<TimeOfImpact> {
+    if stop || r.status != crate::ToiStatus::PenetratingAtStart {
+        return Some(r);
+    }
+    let travel = -r.distance_rate * (t1 - t0);
+    if travel > 0.25 * thickness {
+        Some(TimeOfImpact {
+            time: t0 + START_NUDGE * (t1 - t0),
+            ..r
+        })
+    } else {
+        None
+    }
+}
+
 fn hit_from(r: &TimeOfImpact) -> Option<ShapeCastHit> {
     let status = r.status.to_parry()?;
     Some(ShapeCastHit {
@@ -277,9 +305,9 @@ fn hit_from(r: &TimeOfImpact) -> Option<ShapeCastHit> {
     })
 }
 
-fn toi_to_parry(r: Result<TimeOfImpact, QueryError>) -> Result<Option<ShapeCastHit>, Unsupported> {
+fn toi_to_parry(r: Result<Option<TimeOfImpact>, QueryError>) -> Result<Option<ShapeCastHit>, Unsupported> {
     match r {
-        Ok(r) => Ok(hit_from(&r)),
+        Ok(r) => Ok(r.as_ref().and_then(hit_from)),
         Err(QueryError::EmptyWindow) => Ok(None),
         Err(_) => Err(Unsupported),
     }
@@ -407,7 +435,14 @@ impl QueryDispatcher for SmoothDispatcher {
             ..self.toi_options
         };
         match route(g1, g2) {
-            Route::Curves { .. } => self.toi(motion1, g1, motion2, g2, start_time, end_time, &opts),
+            Route::Curves { .. } => {
+                let (Some(c1), Some(c2)) = (curve_of(g1), curve_of(g2)) else {
+                    return Err(Unsupported);
+                };
+                let thickness = g1.ccd_thickness().min(g2.ccd_thickness());
+                let r = time_of_impact(c1.get(), motion1, c2.get(), motion2, start_time, end_time, &opts);
+                toi_to_parry(r.map(|r| start_contact_rule(r, stop_at_penetration, start_time, end_time, thickness)))
+            }
             Route::HalfSpace { curve, hs, curve_first } => {
                 let r = if curve_first {
                     time_of_impact_halfspace(curve.get(), motion1, hs, motion2, start_time, end_time, &opts)
@@ -422,7 +457,12 @@ impl QueryDispatcher for SmoothDispatcher {
                         }
                     })
                 };
-                toi_to_parry(r)
+                let thickness = if curve_first {
+                    g1.ccd_thickness()
+                } else {
+                    g2.ccd_thickness()
+                };
+                toi_to_parry(r.map(|r| start_contact_rule(r, stop_at_penetration, start_time, end_time, thickness)))
             }
             Route::Composite => composite_cast_nonlinear(
                 self,
@@ -462,7 +502,7 @@ impl SmoothDispatcher {
         let (Some(c1), Some(c2)) = (curve_of(g1), curve_of(g2)) else {
             return Err(Unsupported);
         };
-        toi_to_parry(time_of_impact(c1.get(), m1, c2.get(), m2, t0, t1, opts))
+        toi_to_parry(time_of_impact(c1.get(), m1, c2.get(), m2, t0, t1, opts).map(Some))
     }
 }
 

@@ -184,6 +184,7 @@ pub fn time_of_impact_halfspace(
             status,
             time: s.t,
             distance: s.dist,
+            distance_rate: s.dg,
             point1: s.p,
             point2: ph.inverse_transform_point(pc.transform_point(on_plane)),
             normal1: -s.n_c,

@@ -41,6 +41,7 @@ use crate::math::{Pose, Real, Vector};
 use crate::parry_shape::{flat_pieces, FLAT_FEATURE_MAX_ANGLE};
 use crate::stationary::StationaryDistance;
 use crate::SmoothDispatcher;
+use core::f64::consts::PI;
 use parry2d_f64::query::details::{
     contact_manifolds_composite_shape_composite_shape, contact_manifolds_composite_shape_shape,
     contact_manifolds_heightfield_composite_shape, contact_manifolds_heightfield_shape_shapes,
@@ -49,11 +50,10 @@ use parry2d_f64::query::details::{
     contact_manifolds_voxels_voxels_shapes, NormalConstraints, NormalConstraintsPair,
 };
 use parry2d_f64::query::{
-    ContactManifold, ContactManifoldsWorkspace, DefaultQueryDispatcher, PersistentQueryDispatcher,
-    TrackedContact, Unsupported,
+    ContactManifold, ContactManifoldsWorkspace, DefaultQueryDispatcher, PersistentQueryDispatcher, TrackedContact,
+    Unsupported,
 };
 use parry2d_f64::shape::{HalfSpace, PackedFeatureId, Shape, ShapeType};
-use core::f64::consts::PI;
 
 /// Index of the piece holding φ (pieces start at the breakpoints; the last one wraps).
 fn piece_index(bp: &[f64], phi: f64) -> usize {
@@ -73,7 +73,7 @@ fn piece_index(bp: &[f64], phi: f64) -> usize {
 fn piece_is_flat(c: &dyn ConvexCurve, bp: &[f64], k: usize) -> bool {
     let s = bp[k];
     let e = if k + 1 < bp.len() { bp[k + 1] } else { bp[0] + 2.0 * PI };
-    if !(e > s) {
+    if e.partial_cmp(&s) != Some(core::cmp::Ordering::Greater) {
         return false;
     }
     let cp = c.eval(0.5 * (s + e));
@@ -155,9 +155,7 @@ fn manifold_from_distance<M, C: Default + Copy>(
 
     let (mut n1, mut n2) = (sd.normal1, sd.normal2);
     let constrained = normal_constraints1.is_some() || normal_constraints2.is_some();
-    if constrained
-        && !(normal_constraints1, normal_constraints2).project_local_normals(pos12, &mut n1, &mut n2)
-    {
+    if constrained && !(normal_constraints1, normal_constraints2).project_local_normals(pos12, &mut n1, &mut n2) {
         // The contact is discarded by the normal constraints.
         manifold.local_n1 = Vector::ZERO;
         return;
@@ -224,9 +222,7 @@ fn manifold_from_distance<M, C: Default + Copy>(
         };
         let fid1 = fid(g1, &c1, sd.normal1);
         let fid2 = fid(g2, &c2, sd.normal2);
-        manifold
-            .points
-            .push(TrackedContact::new(p1, p2, fid1, fid2, dist));
+        manifold.points.push(TrackedContact::new(p1, p2, fid1, fid2, dist));
     }
     manifold.match_contacts(&old_points);
 }
@@ -284,7 +280,11 @@ where
             manifold.clear();
             return Ok(());
         }
-        let sd = if ours { self.signed_distance(pos12, g1, g2) } else { None };
+        let sd = if ours {
+            self.signed_distance(pos12, g1, g2)
+        } else {
+            None
+        };
         match sd {
             Some(Ok(sd)) => {
                 manifold_from_distance(
@@ -462,7 +462,11 @@ mod tests {
         assert!(manifolds(&hs, &sq, &pos12, 0.0)[0].points.is_empty());
         // Lower it into contact, 10⁻³ deep.
         let mut pose = pos12;
-        let gap = SmoothDispatcher::default().signed_distance(&pose, &hs, &sq).unwrap().unwrap().distance;
+        let gap = SmoothDispatcher::default()
+            .signed_distance(&pose, &hs, &sq)
+            .unwrap()
+            .unwrap()
+            .distance;
         pose.translation.y -= gap + 1e-3;
         let m = manifolds(&hs, &sq, &pose, 0.0);
         assert_eq!(m[0].points.len(), 2, "{:?}", m[0].points);
@@ -501,13 +505,31 @@ mod tests {
                     manifolds(&b, &e, &pos12, 0.1)
                 };
                 for p in &m[0].points {
-                    let (pb, pe) = if flip { (p.local_p2, p.local_p1) } else { (p.local_p1, p.local_p2) };
+                    let (pb, pe) = if flip {
+                        (p.local_p2, p.local_p1)
+                    } else {
+                        (p.local_p1, p.local_p2)
+                    };
                     let pe_in_b = pos12.transform_point(pe);
                     assert!((pb.x - pe_in_b.x).abs() < 1e-9, "{pb:?} {pe_in_b:?}");
                     assert!((pb.y - 0.5).abs() < 1e-12);
                     assert!((pe_in_b.y - 0.5 - p.dist).abs() < 1e-9);
                 }
             }
+        }
+    }
+
+    #[test]
+    fn ellipse_on_halfspace_is_one_exact_point() {
+        let hs = HalfSpace::new(Vector::Y);
+        let e = Ellipse::new(0.5, 0.2);
+        let pos12 = Pose::new(Vector::new(0.3, 0.19), 0.0);
+        for (g1, g2, pose) in [(&hs as &dyn Shape, &e as &dyn Shape, pos12), (&e, &hs, pos12.inverse())] {
+            let m = manifolds(g1, g2, &pose, 0.0);
+            assert_eq!(m[0].points.len(), 1);
+            let p = &m[0].points[0];
+            assert!((p.dist + 0.01).abs() < 1e-12, "{}", p.dist);
+            assert!((pose.transform_point(p.local_p2) - p.local_p1 - m[0].local_n1 * p.dist).length() < 1e-12);
         }
     }
 }

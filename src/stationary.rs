@@ -351,7 +351,23 @@ pub(crate) fn stationary_in_frame(
         stack.push((a, mid));
         stack.push((mid, b));
     }
-    let (phi, j) = best.ok_or(QueryError::Degenerate)?;
+    let (mut phi, mut j) = best.ok_or(QueryError::Degenerate)?;
+    // On a flat piece of object1 F does not depend on φ, so the search may end anywhere along it;
+    // S is linear there (S_φ = σ), and one clamped Newton step puts the witness opposite
+    // object2's point.
+    if j.curve1.normal_turn_rate() == 0.0 && j.side.v.abs() > sv.side_tol && j.side.p > 0.0 {
+        let (lo, hi) = obj1.phi_range_of_normal(j.curve1.normal);
+        let w = crate::curve::wrap_phi(phi);
+        if lo <= w && w <= hi {
+            let target = (w - j.side.v / j.side.p).clamp(lo, hi);
+            if let Some(jt) = sv.eval(target) {
+                if (jt.fwd.v - j.fwd.v).abs() <= tol.max(1e-12 * size) {
+                    phi = target;
+                    j = jt;
+                }
+            }
+        }
+    }
     let status = if j.fwd.v > 0.0 && status != DistanceStatus::OutOfIterations {
         DistanceStatus::Separated
     } else {
@@ -456,6 +472,24 @@ mod tests {
                 r.distance
             );
         }
+    }
+
+    #[test]
+    fn witness_on_a_flat_face_is_opposite_the_other_shapes_point() {
+        // A wide box whose top face overlaps a disc near x = 0.3: the witness on the box must be
+        // straight below the disc's deepest point, not anywhere along the face.
+        let bx = RoundedPolygon::new(
+            &[
+                Vector::new(-20.0, -0.5),
+                Vector::new(20.0, -0.5),
+                Vector::new(20.0, 0.5),
+                Vector::new(-20.0, 0.5),
+            ],
+            0.0,
+        );
+        let r = d(&bx, &BallCurve { radius: 0.25 }, 0.3, 0.7, 0.0);
+        assert!((r.distance + 0.05).abs() < 1e-12);
+        assert!((r.point1 - Vector::new(0.3, 0.5)).length() < 1e-9, "{:?}", r.point1);
     }
 
     #[test]

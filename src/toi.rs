@@ -147,6 +147,8 @@ pub struct TimeOfImpact {
     pub time: f64,
     /// Signed distance at `time`.
     pub distance: f64,
+    /// dD/dt at `time` along the contact (negative: approaching).
+    pub distance_rate: f64,
     /// Witness point on shape 1 (its local frame).
     pub point1: Vector,
     /// Witness point on shape 2 (its local frame).
@@ -405,6 +407,7 @@ impl<'a> Tracker<'a> {
             status,
             time: t,
             distance: j.fwd.v,
+            distance_rate: j.fwd.t,
             point1: j.curve1.point,
             point2: j.support2.point,
             normal1: j.curve1.normal,

@@ -103,7 +103,7 @@ fn stop_at_penetration_semantics_follow_the_design() {
     let gap = d.distance(&p1.inv_mul(&ball_at.start), &thin, &b).unwrap().distance;
     let before = spin.position_at_time(hit.time_of_impact - 1e-6);
     assert!(gap <= 1e-9 && d.distance(&before.inv_mul(&ball_at.start), &thin, &b).unwrap().distance > 0.0);
-    // Approaching while overlapping: the start time.
+    // Approaching while overlapping: the start time when stopping at penetration.
     let coming = NonlinearRigidMotion::new(
         Pose::new(Vector::new(0.7, 0.0), 0.0),
         Vector::ZERO,
@@ -111,10 +111,27 @@ fn stop_at_penetration_semantics_follow_the_design() {
         0.0,
     );
     let hit = d
-        .cast_shapes_nonlinear(&still, &e, &coming, &b, 0.0, 1.0, false)
+        .cast_shapes_nonlinear(&still, &e, &coming, &b, 0.0, 1.0, true)
         .unwrap()
         .unwrap();
     assert_eq!(hit.time_of_impact, 0.0);
+    // For rapier (false): a fast approach is reported just after the start (rapier drops hits
+    // at exactly the start); a slow one (resting, sliding) is left to the contact solver.
+    let hit = d
+        .cast_shapes_nonlinear(&still, &e, &coming, &b, 0.0, 1.0, false)
+        .unwrap()
+        .unwrap();
+    assert_eq!(hit.time_of_impact, smooth_ccd2d::dispatcher::START_NUDGE);
+    let creeping = NonlinearRigidMotion::new(
+        Pose::new(Vector::new(0.7, 0.0), 0.0),
+        Vector::ZERO,
+        Vector::new(-1e-3, 0.0),
+        0.0,
+    );
+    assert!(d
+        .cast_shapes_nonlinear(&still, &e, &creeping, &b, 0.0, 1.0, false)
+        .unwrap()
+        .is_none());
 }
 
 #[test]
