@@ -28,8 +28,8 @@ use plotters::prelude::*;
 use smooth_ccd2d::distances::{eval_pair, PairFrame, RelativeMotion};
 use smooth_ccd2d::math::{Pose, Vector};
 use smooth_ccd2d::{
-    stationary_distance, time_of_impact_traced, CapsuleEllipse, ConvexCurve, DistanceOptions, Ellipse,
-    RoundedPolygon, ToiOptions, ToiStatus, TraceEvent,
+    stationary_distance, time_of_impact_traced, CapsuleEllipse, ConvexCurve, DistanceOptions, Ellipse, RoundedPolygon,
+    ToiOptions, ToiStatus, TraceEvent,
 };
 use std::error::Error;
 use std::f64::consts::PI;
@@ -145,6 +145,33 @@ fn outline(c: &dyn ConvexCurve, pose: &Pose, n: usize) -> Vec<(f64, f64)> {
     let mut pts: Vec<(f64, f64)> = phis.iter().map(|&p| xy(*pose * c.eval(p).point)).collect();
     pts.push(pts[0]);
     pts
+}
+
+/// The parts of a polyline inside the chart's visible range (plotters would clamp the rest
+/// onto the border).
+fn draw_clipped<DB: DrawingBackend>(chart: &mut Chart<'_, DB>, pts: &[(f64, f64)], style: ShapeStyle) -> Res
+where
+    DB::ErrorType: 'static,
+{
+    let (xr, yr) = (chart.plotting_area().get_x_range(), chart.plotting_area().get_y_range());
+    let inside = |p: &(f64, f64)| xr.contains(&p.0) && yr.contains(&p.1);
+    let mut parts: Vec<Vec<(f64, f64)>> = Vec::new();
+    let mut cur = Vec::new();
+    for p in pts {
+        if inside(p) {
+            cur.push(*p);
+        } else if !cur.is_empty() {
+            parts.push(std::mem::take(&mut cur));
+        }
+    }
+    parts.push(cur);
+    chart.draw_series(
+        parts
+            .into_iter()
+            .filter(|p| p.len() > 1)
+            .map(|p| PathElement::new(p, style)),
+    )?;
+    Ok(())
 }
 
 /// Splits a polyline in φ where it wraps from ±π to ∓π.
@@ -289,7 +316,7 @@ fn diverging(s: f64) -> RGBColor {
     RGBColor(c(0), c(1), c(2))
 }
 
-const LEVELS: i32 = 24;
+const LEVELS: i32 = 16;
 
 fn level(value: f64, vmax: f64) -> i32 {
     if !value.is_finite() {
@@ -323,7 +350,10 @@ impl Grid {
     fn scale(&self) -> f64 {
         let mut a: Vec<f64> = self.vals.iter().filter(|v| v.is_finite()).map(|v| v.abs()).collect();
         a.sort_by(f64::total_cmp);
-        a.get((a.len() as f64 * 0.97) as usize).copied().unwrap_or(1.0).max(1e-12)
+        a.get((a.len() as f64 * 0.97) as usize)
+            .copied()
+            .unwrap_or(1.0)
+            .max(1e-12)
     }
 
     /// The zero level by marching squares, as segments.
@@ -423,8 +453,10 @@ where
             } else {
                 diverging(l as f64 / LEVELS as f64)
             };
-            let (x0, x1) = ((g.xi(i) - 0.5 * dx).max(g.x.0), (g.xi(k - 1) + 0.5 * dx).min(g.x.1));
-            let (y0, y1) = ((g.yj(j) - 0.5 * dy).max(g.y.0), (g.yj(j) + 0.5 * dy).min(g.y.1));
+            // Each cell reaches half a cell into the next run and row, which are drawn later and cover
+            // it: no seams between rounded pixel edges.
+            let (x0, x1) = ((g.xi(i) - 0.5 * dx).max(g.x.0), (g.xi(k - 1) + dx).min(g.x.1));
+            let (y0, y1) = ((g.yj(j) - 0.5 * dy).max(g.y.0), (g.yj(j) + dy).min(g.y.1));
             rects.push(Rectangle::new([(x0, y0), (x1, y1)], color.filled()));
             i = k;
         }
@@ -471,6 +503,7 @@ fn draw_trace<DB: DrawingBackend>(chart: &mut Chart<'_, DB>, trace: &[TraceEvent
 where
     DB::ErrorType: 'static,
 {
+    let (n_pred, n_corr, n_back) = trace_counts(trace);
     let mut accepted = Vec::new();
     let mut predicted = Vec::new();
     let mut corrected = Vec::new();
@@ -479,7 +512,7 @@ where
     let mut impact = None;
     let mut last: Option<(f64, f64)> = None;
     for e in trace {
-        match *e {
+        match e.wrapped() {
             TraceEvent::Start { phi, t, .. } | TraceEvent::Accept { phi, t, .. } => {
                 accepted.push((phi, t));
                 last = Some((phi, t));
@@ -521,17 +554,18 @@ where
             .map(|c| PathElement::new(c, ORANGE.stroke_width(2))),
     )?;
     if with_labels {
-        s.label("corrections (Halley, fixed t)").legend(line_legend(ORANGE));
+        s.label(format!("{n_corr} corrections (Halley, fixed t)"))
+            .legend(line_legend(ORANGE));
     }
     let s = chart.draw_series(predicted.iter().map(|&p| Circle::new(p, 4, PURPLE.stroke_width(2))))?;
     if with_labels {
-        s.label("predictor steps")
+        s.label(format!("{n_pred} predictor steps"))
             .legend(|(x, y)| Circle::new((x + 10, y), 4, PURPLE.stroke_width(2)));
     }
     chart.draw_series(corrected.iter().map(|&p| Circle::new(p, 2, ORANGE.filled())))?;
     let s = chart.draw_series(backtracks.iter().map(|&p| Cross::new(p, 6, BLACK.stroke_width(2))))?;
     if with_labels {
-        s.label("backtracks (rejected points)")
+        s.label(format!("{n_back} backtracks (rejected points)"))
             .legend(|(x, y)| Cross::new((x + 10, y), 6, BLACK.stroke_width(2)));
     }
     if let Some(p) = impact {
@@ -540,10 +574,38 @@ where
             Circle::new(p, 8, BLACK.stroke_width(2)),
         ])?;
         if with_labels {
-            s.label("impact").legend(|(x, y)| Circle::new((x + 10, y), 6, GOLD.filled()));
+            s.label("impact")
+                .legend(|(x, y)| Circle::new((x + 10, y), 6, GOLD.filled()));
         }
     }
     Ok(())
+}
+
+trait Wrapped {
+    fn wrapped(&self) -> TraceEvent;
+}
+
+impl Wrapped for TraceEvent {
+    /// The event with φ wrapped into [−π, π) (the tracker lets φ run past ±π).
+    fn wrapped(&self) -> TraceEvent {
+        let w = smooth_ccd2d::wrap_phi;
+        match *self {
+            TraceEvent::Start { phi, t, distance } => TraceEvent::Start {
+                phi: w(phi),
+                t,
+                distance,
+            },
+            TraceEvent::Predict { phi, t } => TraceEvent::Predict { phi: w(phi), t },
+            TraceEvent::Correct { phi, t, side } => TraceEvent::Correct { phi: w(phi), t, side },
+            TraceEvent::Backtrack { phi, t } => TraceEvent::Backtrack { phi: w(phi), t },
+            TraceEvent::Accept { phi, t, distance } => TraceEvent::Accept {
+                phi: w(phi),
+                t,
+                distance,
+            },
+            TraceEvent::Impact { phi, t } => TraceEvent::Impact { phi: w(phi), t },
+        }
+    }
 }
 
 /// Counts of the trace's events: (predictor steps, corrections, backtracks).
@@ -589,7 +651,7 @@ impl Figure for Fig1 {
             &panels[1],
             "Translated by C = (1, 2), rotated by 0.5",
             (-1.8, 3.8),
-            (-0.8, 4.6),
+            (-2.2, 4.6),
         )?;
         draw_dashed(&mut c, outline(&e, &id, 400), GREY.stroke_width(1))?;
         draw_outline(&mut c, outline(&e, &moved, 400), OBJ1.stroke_width(2))?;
@@ -607,7 +669,12 @@ impl Figure for Fig1 {
             (-1.3, 1.3),
             (-1.3, 1.3),
         )?;
-        let core: Vec<(f64, f64)> = hept.vertices().iter().chain(hept.vertices().first()).map(|p| xy(*p)).collect();
+        let core: Vec<(f64, f64)> = hept
+            .vertices()
+            .iter()
+            .chain(hept.vertices().first())
+            .map(|p| xy(*p))
+            .collect();
         draw_dashed(&mut c, core, GREY.stroke_width(1))?;
         draw_outline(&mut c, outline(&hept, &id, 700), OBJ1.stroke_width(2))?;
 
@@ -615,11 +682,15 @@ impl Figure for Fig1 {
         let mut c = world_chart(
             &panels[3],
             "Shape1 of Appendix A (r1 = 0.5, r2 = 1, r3 = 0.8)",
-            (-1.6, 1.6),
+            (-1.0, 2.6),
             (-1.6, 1.6),
         )?;
         let colors = [OBJ1, ORANGE, GREEN];
-        let names = ["half-ellipse |φ| > π/2", "arcs, atan(r2/r1) ≤ |φ| ≤ π/2", "segment |φ| < atan(r2/r1)"];
+        let names = [
+            "half-ellipse |φ| > π/2",
+            "arcs, atan(r2/r1) ≤ |φ| ≤ π/2",
+            "segment |φ| < atan(r2/r1)",
+        ];
         let mut labelled = [false; 3];
         let n = 900;
         let mut run: Vec<(f64, f64)> = Vec::new();
@@ -645,14 +716,17 @@ impl Figure for Fig1 {
             }
             run.push(p);
         }
-        c.draw_series(std::iter::once(PathElement::new(run, colors[run_piece].stroke_width(3))))?;
+        c.draw_series(std::iter::once(PathElement::new(
+            run,
+            colors[run_piece].stroke_width(3),
+        )))?;
         c.draw_series(
             shape1
                 .breakpoints()
                 .iter()
                 .map(|&b| Circle::new(xy(shape1.eval(b).point), 4, BLACK.filled())),
         )?;
-        legend(&mut c, SeriesLabelPosition::UpperLeft)?;
+        legend(&mut c, SeriesLabelPosition::UpperRight)?;
         Ok(())
     }
 }
@@ -707,9 +781,12 @@ impl Figure for Fig2 {
         ];
         for (k, (q1, q2, title)) in poses.iter().enumerate() {
             let mut c = world_chart(&panels[k], title, range.0, range.1)?;
-            c.draw_series(std::iter::once(PathElement::new(outline(&e1, q1, 400), OBJ1.stroke_width(2))))?
-                .label("object1 (a1 = 0.5, b1 = 0.8)")
-                .legend(line_legend(OBJ1));
+            c.draw_series(std::iter::once(PathElement::new(
+                outline(&e1, q1, 400),
+                OBJ1.stroke_width(2),
+            )))?
+            .label("object1 (a1 = 0.5, b1 = 0.8)")
+            .legend(line_legend(OBJ1));
             c.draw_series(DashedLineSeries::new(outline(&e2, q2, 400), 6, 4, OBJ2.stroke_width(2)))?
                 .label("object2 (a2 = 0.5, b2 = 2)")
                 .legend(line_legend(OBJ2));
@@ -725,9 +802,12 @@ impl Figure for Fig2 {
             }
             // The closest points of the stationary distance.
             let (w1, w2) = (*q1 * self.witness.point1, *q2 * self.witness.point2);
-            c.draw_series(std::iter::once(PathElement::new(vec![xy(w1), xy(w2)], BLACK.stroke_width(1))))?
-                .label(format!("closest points, distance {:.4}", self.witness.distance))
-                .legend(line_legend(BLACK));
+            c.draw_series(std::iter::once(PathElement::new(
+                vec![xy(w1), xy(w2)],
+                BLACK.stroke_width(1),
+            )))?
+            .label(format!("closest points, distance {:.4}", self.witness.distance))
+            .legend(line_legend(BLACK));
             c.draw_series([w1, w2].map(|w| Circle::new(xy(w), 3, BLACK.filled())))?;
             legend(&mut c, SeriesLabelPosition::LowerLeft)?;
         }
@@ -762,7 +842,11 @@ fn distance_curves(e1: &Ellipse, o2: &dyn ConvexCurve, frame: &PairFrame, n: usi
     };
     for i in 0..=n {
         let x = -PI + 2.0 * PI * i as f64 / n as f64;
-        let phi = if eccentric { e1.normal_angle_from_eccentric(x) } else { x };
+        let phi = if eccentric {
+            e1.normal_angle_from_eccentric(x)
+        } else {
+            x
+        };
         if let Some(j) = eval_pair(e1, o2, frame, phi) {
             c.x.push(x);
             c.euclid.push(j.euclidean().v);
@@ -800,25 +884,50 @@ impl Figure for Fig3 {
     {
         let (e1, p1, e2, p2) = spec_pair();
         let (left, right) = root.split_horizontally(560);
-        let mut c = world_chart(&left, "The pair (world)", (-3.0, 3.0), (-2.6, 2.6))?;
-        c.draw_series(std::iter::once(PathElement::new(outline(&e1, &p1, 400), OBJ1.stroke_width(2))))?
-            .label("object1")
-            .legend(line_legend(OBJ1));
-        c.draw_series(DashedLineSeries::new(outline(&e2, &p2, 400), 6, 4, OBJ2.stroke_width(2)))?
-            .label("object2")
-            .legend(line_legend(OBJ2));
+        let (left, notes) = left.split_vertically(600);
+        let mut c = world_chart(&left, "The pair (world), normals at φ = kπ/4", (-2.4, 3.0), (-1.4, 2.0))?;
+        c.draw_series(std::iter::once(PathElement::new(
+            outline(&e1, &p1, 400),
+            OBJ1.stroke_width(2),
+        )))?
+        .label("object1")
+        .legend(line_legend(OBJ1));
+        c.draw_series(DashedLineSeries::new(
+            outline(&e2, &p2, 400),
+            6,
+            4,
+            OBJ2.stroke_width(2),
+        ))?
+        .label("object2")
+        .legend(line_legend(OBJ2));
         let (w1, w2) = (p1 * self.best.point1, p2 * self.best.point2);
-        c.draw_series(std::iter::once(PathElement::new(vec![xy(w1), xy(w2)], BLACK.stroke_width(2))))?
-            .label(format!("global minimum, distance {:.4}", self.best.distance))
-            .legend(line_legend(BLACK));
+        c.draw_series(std::iter::once(PathElement::new(
+            vec![xy(w1), xy(w2)],
+            BLACK.stroke_width(2),
+        )))?
+        .label(format!("global minimum, distance {:.4}", self.best.distance))
+        .legend(line_legend(BLACK));
         // Object1's points at a few φ with their normals, to read the parameter.
         for k in 0..8 {
             let phi = -PI + PI * k as f64 / 4.0;
             let cp = e1.eval(phi);
             let (a, b) = (p1 * cp.point, p1 * cp.point + p1.rotation * cp.normal * 0.35);
-            c.draw_series(std::iter::once(PathElement::new(vec![xy(a), xy(b)], OBJ1.mix(0.5).stroke_width(1))))?;
+            c.draw_series(std::iter::once(PathElement::new(
+                vec![xy(a), xy(b)],
+                OBJ1.mix(0.5).stroke_width(1),
+            )))?;
         }
-        legend(&mut c, SeriesLabelPosition::LowerLeft)?;
+        legend(&mut c, SeriesLabelPosition::LowerRight)?;
+        let lines = [
+            "For each φ: P1(φ), N(φ) on object1; P2 = S2(−N), the point",
+            "of object2 whose outward normal is −N (eq. 4); d = P2 − P1.",
+            "distanceEuclidean = |d|,  distanceFwd = d·N,  distanceSide = d × N.",
+            "The global extremum is the root of distanceSide with",
+            "distanceFwd > 0; max distanceFwd is the signed distance.",
+        ];
+        for (k, line) in lines.iter().enumerate() {
+            notes.draw(&Text::new(*line, (20, 20 + 24 * k as i32), (FONT, 15).into_font()))?;
+        }
 
         let rows = right.split_evenly((2, 1));
         let phi_star = self.best.phi;
@@ -840,7 +949,8 @@ impl Figure for Fig3 {
             let all = cv.euclid.iter().chain(&cv.neg_fwd).chain(&cv.side);
             let (lo, hi) = all.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &y| (a.min(y), b.max(y)));
             let pad = 0.05 * (hi - lo);
-            let mut c = plot_chart(&rows[k], title, (-PI, PI), (lo - pad, hi + pad), xdesc, "distance")?;
+            let bottom = lo - 0.6 * (hi - lo);
+            let mut c = plot_chart(&rows[k], title, (-PI, PI), (bottom, hi + pad), xdesc, "distance")?;
             c.draw_series(std::iter::once(PathElement::new(
                 vec![(-PI, 0.0), (PI, 0.0)],
                 BLACK.mix(0.4).stroke_width(1),
@@ -856,14 +966,14 @@ impl Figure for Fig3 {
                 .label("distanceSide")
                 .legend(line_legend(ORANGE));
             c.draw_series(std::iter::once(PathElement::new(
-                vec![(xs, lo - pad), (xs, hi + pad)],
+                vec![(xs, bottom), (xs, hi + pad)],
                 BLACK.mix(0.5).stroke_width(1),
             )))?;
             let d = self.best.distance;
             c.draw_series([(xs, d), (xs, -d), (xs, 0.0)].map(|p| Circle::new(p, 5, BLACK.filled())))?
                 .label(format!("global extremum φ = {xs:.4} (stationary_distance)"))
                 .legend(|(x, y)| Circle::new((x + 10, y), 4, BLACK.filled()));
-            legend(&mut c, SeriesLabelPosition::UpperRight)?;
+            legend(&mut c, SeriesLabelPosition::LowerLeft)?;
         }
         Ok(())
     }
@@ -871,6 +981,10 @@ impl Figure for Fig3 {
 
 // ---------------------------------------------------------------------------------------------
 // Figure 4: the moving pair of figure 2
+
+/// Object1's velocity and spin in figure 4.
+const FIG4_VEL: (f64, f64) = (0.8, 0.2);
+const FIG4_SPIN: f64 = 4.0;
 
 struct Fig4 {
     m1: NonlinearRigidMotion,
@@ -886,7 +1000,7 @@ impl Fig4 {
     fn motions() -> (NonlinearRigidMotion, NonlinearRigidMotion) {
         let (_, p1, _, p2) = spec_pair();
         (
-            NonlinearRigidMotion::new(p1, Vector::ZERO, v(1.0, 0.25), 1.5),
+            NonlinearRigidMotion::new(p1, Vector::ZERO, v(FIG4_VEL.0, FIG4_VEL.1), FIG4_SPIN),
             NonlinearRigidMotion::constant_position(p2),
         )
     }
@@ -897,7 +1011,7 @@ impl Fig4 {
         let t_end = 2.0;
         let mut trace = Vec::new();
         let hit = time_of_impact_traced(&e1, &m1, &e2, &m2, 0.0, t_end, &ToiOptions::default(), &mut trace)?;
-        let (side, fwd) = side_fwd_grids(&e1, &e2, &m1, &m2, (0.0, t_end), (240, 160));
+        let (side, fwd) = side_fwd_grids(&e1, &e2, &m1, &m2, (0.0, t_end), (200, 140));
         Ok(Self {
             m1,
             m2,
@@ -926,7 +1040,10 @@ impl Figure for Fig4 {
         let (mid, right) = rest.split_horizontally(620);
         let t_hit = self.hit.time;
         let title = if self.hit.status == ToiStatus::Hit {
-            format!("object1 moves at (1, 0.25), spins at 1.5 rad/s; impact t = {t_hit:.4}")
+            format!(
+                "object1: v = ({}, {}), ω = {} rad/s; impact at t = {t_hit:.4}",
+                FIG4_VEL.0, FIG4_VEL.1, FIG4_SPIN
+            )
         } else {
             format!("no impact ({:?})", self.hit.status)
         };
@@ -941,36 +1058,49 @@ impl Figure for Fig4 {
             } else {
                 OBJ1.mix(alpha).stroke_width(2)
             };
-            c.draw_series(std::iter::once(PathElement::new(outline(&e1, &pose, 300), style)))?;
-            c.draw_series(std::iter::once(Text::new(
-                format!("t={t:.2}"),
-                xy(pose.translation),
-                (FONT, 12).into_font().color(&BLACK),
-            )))?;
+            let pts = outline(&e1, &pose, 300);
+            if k == 0 || k == 4 || k == times.len() - 1 {
+                let top = pts
+                    .iter()
+                    .fold((0.0, f64::NEG_INFINITY), |a, &p| if p.1 > a.1 { p } else { a });
+                c.draw_series(std::iter::once(Text::new(
+                    format!("t = {t:.2}"),
+                    (top.0 - 0.3, top.1 + 0.25),
+                    (FONT, 13).into_font().color(&BLACK),
+                )))?;
+            }
+            c.draw_series(std::iter::once(PathElement::new(pts, style)))?;
         }
         if self.hit.status == ToiStatus::Hit {
             let pose = self.m1.position_at_time(t_hit);
-            c.draw_series(std::iter::once(Circle::new(xy(pose * self.hit.point1), 5, GOLD.filled())))?;
+            c.draw_series(std::iter::once(Circle::new(
+                xy(pose * self.hit.point1),
+                5,
+                GOLD.filled(),
+            )))?;
         }
 
-        let (n_pred, n_corr, n_back) = trace_counts(&self.trace);
-        let subtitle = format!("{n_pred} predictor steps, {n_corr} corrections, {n_back} backtracks");
         for (area, grid, name, labels) in [
-            (&mid, &self.side, "distanceSide(φ, t)", true),
-            (&right, &self.fwd, "distanceFwd(φ, t)", false),
+            (&mid, &self.side, "distanceSide(φ, t) and the tracked path", true),
+            (
+                &right,
+                &self.fwd,
+                "distanceFwd(φ, t), zero level of distanceSide",
+                false,
+            ),
         ] {
             let (plot, bar) = area.split_horizontally(area.dim_in_pixel().0 - 70);
             let vmax = grid.scale();
             let mut c = plot_chart(
                 &plot,
-                &format!("{name}: {subtitle}"),
+                name,
                 (-PI, PI),
                 (0.0, self.t_end),
                 "φ (normal angle of object1)",
                 "t",
             )?;
             draw_heat(&mut c, grid, vmax, &self.side)?;
-            draw_trace(&mut c, &self.trace, true)?;
+            draw_trace(&mut c, &self.trace, labels)?;
             if labels {
                 legend(&mut c, SeriesLabelPosition::UpperLeft)?;
             }
@@ -990,6 +1120,8 @@ struct Basin {
     min: (f64, f64),
     /// Where the function stops decreasing towards the minimum.
     basin: (f64, f64),
+    /// Where it is convex about the minimum (Newton's method in optimization heads downhill).
+    convex: (f64, f64),
     range: (f64, f64),
 }
 
@@ -999,7 +1131,8 @@ struct Fig5 {
     normal: Vec<Basin>,
 }
 
-/// Object1: a thin ellipse 1 × 1/ratio; object2: an ellipse 0.3 × 0.6 near its tip.
+/// Object1: an ellipse with semi-axes 1 × 1/ratio; object2: an ellipse 0.3 × 0.6 near its tip,
+/// so that the closest points sit where eq. 1's parameter squeezes the normal's turn.
 fn appendix_c_pair(ratio: f64) -> (Ellipse, Pose, Ellipse, Pose) {
     (
         Ellipse::new(1.0, 1.0 / ratio),
@@ -1015,7 +1148,11 @@ fn basin_of(e1: &Ellipse, o2: &dyn ConvexCurve, frame: &PairFrame, eccentric: bo
     let mut ys = Vec::with_capacity(n + 1);
     for i in 0..=n {
         let x = -PI + 2.0 * PI * i as f64 / n as f64;
-        let phi = if eccentric { e1.normal_angle_from_eccentric(x) } else { x };
+        let phi = if eccentric {
+            e1.normal_angle_from_eccentric(x)
+        } else {
+            x
+        };
         if let Some(j) = eval_pair(e1, o2, frame, phi) {
             xs.push(x);
             ys.push(j.euclidean().v);
@@ -1036,6 +1173,14 @@ fn basin_of(e1: &Ellipse, o2: &dyn ConvexCurve, frame: &PairFrame, eccentric: bo
     }
     while hi + 1 < xs.len() && ys[hi + 1] >= ys[hi] {
         hi += 1;
+    }
+    let dd = |i: usize| ys[i - 1] - 2.0 * ys[i] + ys[i + 1];
+    let (mut clo, mut chi) = (k.max(1), k.min(xs.len() - 2));
+    while clo > 1 && dd(clo - 1) > 0.0 {
+        clo -= 1;
+    }
+    while chi + 2 < xs.len() && dd(chi + 1) > 0.0 {
+        chi += 1;
     }
     // Min/max per pixel-sized bin so that a narrow basin stays visible.
     let bins = 1500;
@@ -1062,6 +1207,7 @@ fn basin_of(e1: &Ellipse, o2: &dyn ConvexCurve, frame: &PairFrame, eccentric: bo
         line,
         min: (xs[k], ys[k]),
         basin: (xs[lo], xs[hi]),
+        convex: (xs[clo], xs[chi]),
         range,
     }
 }
@@ -1076,7 +1222,13 @@ impl Fig5 {
             let pos12 = p1.inv_mul(&p2);
             let frame = PairFrame::from_pos12(&pos12);
             let best = stationary_distance(&e1, &e2, &pos12, &DistanceOptions::default())?;
-            ecc.push(basin_of(&e1, &e2, &frame, true, e1.eccentric_from_normal_angle(best.phi)));
+            ecc.push(basin_of(
+                &e1,
+                &e2,
+                &frame,
+                true,
+                e1.eccentric_from_normal_angle(best.phi),
+            ));
             normal.push(basin_of(&e1, &e2, &frame, false, best.phi));
         }
         Ok(Self { ratios, ecc, normal })
@@ -1099,13 +1251,21 @@ impl Figure for Fig5 {
         let rows = bottom.split_evenly((2, 3));
         for (k, r) in self.ratios.iter().enumerate() {
             let (e1, p1, e2, p2) = appendix_c_pair(*r);
-            let mut c = world_chart(&cols[k], &format!("Axis ratio 1:{r}"), (-1.2, 1.5), (-0.5, 1.5))?;
+            let mut c = world_chart(
+                &cols[k],
+                &format!("object1 1:{r} (solid), object2 0.3 × 0.6 (dashed)"),
+                (-1.2, 1.5),
+                (-0.5, 1.5),
+            )?;
             draw_outline(&mut c, outline(&e1, &p1, 2000), OBJ1.stroke_width(2))?;
             draw_dashed(&mut c, outline(&e2, &p2, 400), OBJ2.stroke_width(2))?;
             let pos12 = p1.inv_mul(&p2);
             let best = stationary_distance(&e1, &e2, &pos12, &DistanceOptions::default())?;
             let (w1, w2) = (p1 * best.point1, p2 * best.point2);
-            c.draw_series(std::iter::once(PathElement::new(vec![xy(w1), xy(w2)], BLACK.stroke_width(2))))?;
+            c.draw_series(std::iter::once(PathElement::new(
+                vec![xy(w1), xy(w2)],
+                BLACK.stroke_width(2),
+            )))?;
         }
         for (row, (set, xdesc)) in [(&self.ecc, "φ (eq. 1)"), (&self.normal, "φ (normal angle)")]
             .into_iter()
@@ -1115,18 +1275,31 @@ impl Figure for Fig5 {
                 let pad = 0.05 * (b.range.1 - b.range.0);
                 let (y0, y1) = (b.range.0 - pad, b.range.1 + pad);
                 let title = format!(
-                    "1:{}, basin width {:.4} {}",
+                    "1:{}: basin {:.3}, convex part {:.4}",
                     self.ratios[k],
                     b.basin.1 - b.basin.0,
-                    if row == 0 { "(eq. 1's φ)" } else { "(normal angle)" }
+                    b.convex.1 - b.convex.0,
                 );
-                let mut c = plot_chart(&rows[3 * row + k], &title, (-PI, PI), (y0, y1), xdesc, "distanceEuclidean")?;
+                let mut c = plot_chart(
+                    &rows[3 * row + k],
+                    &title,
+                    (-PI, PI),
+                    (y0, y1),
+                    xdesc,
+                    "distanceEuclidean",
+                )?;
                 c.draw_series(std::iter::once(Rectangle::new(
                     [(b.basin.0, y0), (b.basin.1, y1)],
                     GREEN.mix(0.25).filled(),
                 )))?
-                .label("basin of the global minimum")
+                .label("decreasing towards the global minimum")
                 .legend(|(x, y)| Rectangle::new([(x, y - 5), (x + 20, y + 5)], GREEN.mix(0.25).filled()));
+                c.draw_series(std::iter::once(Rectangle::new(
+                    [(b.convex.0, y0), (b.convex.1, y1)],
+                    GREEN.mix(0.6).filled(),
+                )))?
+                .label("convex about it")
+                .legend(|(x, y)| Rectangle::new([(x, y - 5), (x + 20, y + 5)], GREEN.mix(0.6).filled()));
                 c.draw_series(LineSeries::new(b.line.clone(), OBJ1.stroke_width(2)))?;
                 c.draw_series(std::iter::once(Circle::new(b.min, 5, BLACK.filled())))?
                     .label("global minimum")
@@ -1163,8 +1336,12 @@ impl Fig6 {
         let (hept, m1, ell, m2) = appendix_d();
         let mut trace = Vec::new();
         let hit = time_of_impact_traced(&hept, &m1, &ell, &m2, 0.0, 1.0, &ToiOptions::default(), &mut trace)?;
-        let t_max = if hit.status == ToiStatus::Hit { 1.25 * hit.time } else { 0.2 };
-        let (side, _) = side_fwd_grids(&hept, &ell, &m1, &m2, (0.0, t_max), (300, 200));
+        let t_max = if hit.status == ToiStatus::Hit {
+            1.25 * hit.time
+        } else {
+            0.2
+        };
+        let (side, _) = side_fwd_grids(&hept, &ell, &m1, &m2, (0.0, t_max), (220, 150));
         Ok(Self {
             m1,
             m2,
@@ -1180,14 +1357,15 @@ impl Figure for Fig6 {
         "fig6_appendix_d"
     }
     fn size(&self) -> (u32, u32) {
-        (1400, 640)
+        (1900, 640)
     }
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Res
     where
         DB::ErrorType: 'static,
     {
         let (hept, _, ell, _) = appendix_d();
-        let (left, right) = root.split_horizontally(600);
+        let (left, rest) = root.split_horizontally(580);
+        let (zoom, right) = rest.split_horizontally(500);
         let t_hit = self.hit.time;
         let title = if self.hit.status == ToiStatus::Hit {
             format!("Heptagon at 30 rad/s, drifting at (2, 0): impact t = {t_hit:.5}")
@@ -1201,31 +1379,71 @@ impl Figure for Fig6 {
             let t = t_hit * k as f64 / n as f64;
             let pose = self.m1.position_at_time(t);
             let alpha = 0.25 + 0.75 * k as f64 / n as f64;
-            c.draw_series(std::iter::once(PathElement::new(
+            let s = c.draw_series(std::iter::once(PathElement::new(
                 outline(&hept, &pose, 700),
                 OBJ1.mix(alpha).stroke_width(if k == n { 3 } else { 1 }),
             )))?;
+            if k == n {
+                s.label(format!("object1 at t = k·{:.4}, k = 0..{n}", t_hit / n as f64))
+                    .legend(line_legend(OBJ1));
+            }
             // A body-fixed mark on vertex 0 to show the spin.
             let tip = pose * hept.vertices()[0];
             c.draw_series(std::iter::once(Circle::new(xy(tip), 3, OBJ1.mix(alpha).filled())))?;
         }
         if self.hit.status == ToiStatus::Hit {
             let pose = self.m1.position_at_time(t_hit);
-            c.draw_series(std::iter::once(Circle::new(xy(pose * self.hit.point1), 6, GOLD.filled())))?
-                .label("contact point")
-                .legend(|(x, y)| Circle::new((x + 10, y), 5, GOLD.filled()));
-            c.draw_series(std::iter::once(PathElement::new(vec![(0.0, 0.0), (0.0, 0.0)], OBJ1)))?
-                .label(format!("object1 at t = k·{:.4}, k = 0..{n}", t_hit / n as f64))
+            c.draw_series(std::iter::once(Circle::new(
+                xy(pose * self.hit.point1),
+                6,
+                GOLD.filled(),
+            )))?
+            .label("contact point")
+            .legend(|(x, y)| Circle::new((x + 10, y), 5, GOLD.filled()));
+            legend(&mut c, SeriesLabelPosition::LowerLeft)?;
+        }
+
+        if self.hit.status == ToiStatus::Hit {
+            let pose = self.m1.position_at_time(t_hit);
+            let p = pose * self.hit.point1;
+            let h = 0.1;
+            let mut c = world_chart(
+                &zoom,
+                "Near the contact, scaled 20:1",
+                (p.x - h, p.x + h),
+                (p.y - h, p.y + h),
+            )?;
+            draw_clipped(&mut c, &outline(&ell, &self.m2.start, 20_000), OBJ2.stroke_width(2))?;
+            let dt = 0.0015;
+            for k in (0..=5).rev() {
+                let t = t_hit - dt * k as f64;
+                let pose = self.m1.position_at_time(t);
+                let alpha = 1.0 - 0.14 * k as f64;
+                let style = OBJ1.mix(alpha).stroke_width(if k == 0 { 3 } else { 1 });
+                draw_clipped(&mut c, &outline(&hept, &pose, 20_000), style)?;
+            }
+            let n = pose.rotation * self.hit.normal1;
+            c.draw_series(std::iter::once(PathElement::new(
+                vec![xy(p), xy(p + n * 0.05)],
+                BLACK.stroke_width(2),
+            )))?
+            .label("contact normal of object1")
+            .legend(line_legend(BLACK));
+            c.draw_series(std::iter::once(Circle::new(xy(p), 5, GOLD.filled())))?;
+            c.draw_series(std::iter::empty::<PathElement<(f64, f64)>>())?
+                .label(format!("object1 at t_impact − k·{dt} s, k = 0..5"))
                 .legend(line_legend(OBJ1));
+            c.draw_series(std::iter::empty::<PathElement<(f64, f64)>>())?
+                .label("object2 (solid here)")
+                .legend(line_legend(OBJ2));
             legend(&mut c, SeriesLabelPosition::LowerLeft)?;
         }
 
         let (plot, bar) = right.split_horizontally(right.dim_in_pixel().0 - 70);
-        let (n_pred, n_corr, n_back) = trace_counts(&self.trace);
         let vmax = self.side.scale();
         let mut c = plot_chart(
             &plot,
-            &format!("distanceSide(φ, t): {n_pred} predictor steps, {n_corr} corrections, {n_back} backtracks"),
+            "distanceSide(φ, t) and the tracked path",
             (-PI, PI),
             self.side.y,
             "φ (heptagon parameter: corner and edge pieces)",
