@@ -6,5 +6,7 @@
 pub mod reference;
 pub mod scenarios;
 
+#[allow(unused_imports)]
 pub use reference::*;
+#[allow(unused_imports)]
 pub use scenarios::*;
