@@ -2,7 +2,8 @@
 //! `DefaultQueryDispatcher::cast_shapes_nonlinear` on the same shapes, one group per scenario
 //! class of `tests/common/scenarios.rs`, hits and misses separately (a fixed batch of
 //! `support::BATCH` scenarios per class split by this crate's outcome; one iteration runs the
-//! whole batch). A last group compares the stationary distance on ellipse pairs.
+//! whole batch). A last group compares the stationary distance on ellipse pairs (with this
+//! crate's curve API, which also computes the penetration depth, as a third function).
 //!
 //! Run with `cargo bench --bench toi`.
 
@@ -16,7 +17,7 @@ use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criteri
 use parry2d_f64::math::Pose;
 use parry2d_f64::query::{DefaultQueryDispatcher, QueryDispatcher};
 use parry2d_f64::shape::Shape;
-use smooth_ccd2d::SmoothDispatcher;
+use smooth_ccd2d::{stationary_distance, DistanceOptions, Ellipse, SmoothDispatcher};
 use std::time::Duration;
 use support::{split_batch, Case, BATCH};
 
@@ -101,6 +102,19 @@ fn bench_distance(c: &mut Criterion) {
             b.iter(|| {
                 for (p, g1, g2) in batch {
                     black_box(DefaultQueryDispatcher.distance(p, &**g1, &**g2).ok());
+                }
+            })
+        });
+        // The signed distance through the curve API (no dispatch; penetration depth included).
+        let curves: Vec<(Pose, Ellipse, Ellipse)> = batch
+            .iter()
+            .filter_map(|(p, g1, g2)| Some((*p, *g1.as_shape::<Ellipse>()?, *g2.as_shape::<Ellipse>()?)))
+            .collect();
+        let opts = DistanceOptions::default();
+        g.bench_with_input(BenchmarkId::new("ours-curve-api", &param), &curves, |b, curves| {
+            b.iter(|| {
+                for (p, e1, e2) in curves {
+                    black_box(stationary_distance(e1, e2, p, &opts).ok());
                 }
             })
         });

@@ -12,8 +12,8 @@ use parry2d_f64::math::{Pose, Vector};
 use parry2d_f64::query::{NonlinearRigidMotion, QueryDispatcher};
 use parry2d_f64::shape::{Ball, Cuboid, Shape};
 use smooth_ccd2d::{
-    stationary_distance, time_of_impact, BallCurve, DistanceOptions, DistanceStatus, Ellipse, RoundedPolygon,
-    SmoothDispatcher, ToiOptions,
+    stationary_distance, time_of_impact, BallCurve, DistanceOptions, DistanceStatus, Ellipse, QueryError,
+    RoundedPolygon, SmoothDispatcher, StationaryDistance, ToiOptions,
 };
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
@@ -67,6 +67,23 @@ fn pos12_at(s: &Scenario, t: f64) -> Pose {
     s.motion1.position_at_time(t).inverse() * s.motion2.position_at_time(t)
 }
 
+/// The stationary distance at the window start with the centres' offset scaled by `shrink`
+/// (counted), the strictly convex shape as object2 (`stationary_distance` does not swap roles).
+fn distance_at_start(
+    s: &Scenario,
+    dopts: &DistanceOptions,
+    shrink: f64,
+) -> (Result<StationaryDistance, QueryError>, usize, usize) {
+    let mut pos12 = pos12_at(s, s.t0);
+    pos12.translation *= shrink;
+    if s.curve2().is_strictly_convex() {
+        counted(|| stationary_distance(s.curve1(), s.curve2(), &pos12, dopts))
+    } else {
+        let pos21 = pos12.inverse();
+        counted(|| stationary_distance(s.curve2(), s.curve1(), &pos21, dopts))
+    }
+}
+
 /// Classes whose shapes are `Ellipse`, `RoundedPolygon` (rounded and sharp) and `BallCurve`, and
 /// the Appendix A shape.
 const CLASSES: [ScenarioClass; 6] = ScenarioClass::ALL;
@@ -90,8 +107,7 @@ fn separated_time_of_impact_and_distance_allocate_nothing() {
                 failures.push(format!("time_of_impact: {n} allocations ({bytes} B): {}", s.describe()));
             }
             // The start is separated by construction.
-            let pos12 = pos12_at(&s, s.t0);
-            let (r, n, bytes) = counted(|| stationary_distance(s.curve1(), s.curve2(), &pos12, &dopts));
+            let (r, n, bytes) = distance_at_start(&s, &dopts, 1.0);
             let r = r.expect("valid pose");
             assert_eq!(r.status, DistanceStatus::Separated, "{}", s.describe());
             if n > 0 {
@@ -152,9 +168,7 @@ fn print_allocations_of_penetrating_distances() {
             let s = generate(class, seed);
             // Centres brought together: overlapping.
             for shrink in [0.0, 0.25, 0.5] {
-                let mut pos12 = pos12_at(&s, s.t0);
-                pos12.translation *= shrink;
-                let (r, n, b) = counted(|| stationary_distance(s.curve1(), s.curve2(), &pos12, &dopts));
+                let (r, n, b) = distance_at_start(&s, &dopts, shrink);
                 let Ok(r) = r else { continue };
                 if r.distance >= 0.0 {
                     continue;
@@ -204,5 +218,29 @@ fn print_allocations_of_the_dispatcher() {
         println!(
             "| {name} | {n_apart} ({b_apart} B) | {n_pen} ({b_pen} B) | {n_con} ({b_con} B) | {n_cast} ({b_cast} B) |"
         );
+    }
+}
+
+/// Prints what `time_of_impact` allocates when the pair starts in contact (rapier's solid-body
+/// CCD passes `stop_at_penetration = false`).
+#[test]
+fn print_allocations_of_time_of_impact_starting_in_contact() {
+    let e1 = Ellipse::new(1.0, 0.3);
+    let e2 = Ellipse::new(0.8, 0.5);
+    let start2 = Pose::new(Vector::new(1.5, 0.2), 0.4);
+    println!("| start | stop_at_penetration | status | allocations |");
+    println!("|---|---|---|---:|");
+    for (label, v) in [("overlapping, separating", 3.0), ("overlapping, approaching", -3.0)] {
+        let m1 = NonlinearRigidMotion::new(Pose::rotation(0.1), Vector::ZERO, Vector::ZERO, 1.0);
+        let m2 = NonlinearRigidMotion::new(start2, Vector::ZERO, Vector::new(v, 0.0), -2.0);
+        for stop in [true, false] {
+            let opts = ToiOptions {
+                stop_at_penetration: stop,
+                ..ToiOptions::default()
+            };
+            let (r, n, b) = counted(|| time_of_impact(&e1, &m1, &e2, &m2, 0.0, 1.0, &opts));
+            let r = r.expect("valid query");
+            println!("| {label} | {stop} | {:?} | {n} ({b} B) |", r.status);
+        }
     }
 }

@@ -33,10 +33,7 @@ fn wall(x0: f64, w: f64, h: f64) -> RoundedPolygon {
 
 fn hit_time(r: &RefToi) -> f64 {
     match r.outcome {
-        RefOutcome::Hit {
-            time,
-            crossed: true,
-        } => time,
+        RefOutcome::Hit { time, crossed: true } => time,
         other => panic!("expected a crossed hit, got {other:?} ({r:?})"),
     }
 }
@@ -48,12 +45,7 @@ impl Worst {
         Worst(name, 0.0, String::new())
     }
     fn see(&mut self, err: f64, bound: f64, what: impl Fn() -> String) {
-        assert!(
-            err <= bound,
-            "{}: error {err:e} > {bound:e}: {}",
-            self.0,
-            what()
-        );
+        assert!(err <= bound, "{}: error {err:e} > {bound:e}: {}", self.0, what());
         if err > self.1 {
             self.1 = err;
             self.2 = what();
@@ -93,10 +85,7 @@ fn support_points_are_the_maxima_of_the_sampled_boundary() {
             let a = TAU * k as f64 / 97.0 + 0.01;
             let n = Vector::new(a.cos(), a.sin());
             let h = s.support_point(n).dot(n);
-            let sampled = pts
-                .iter()
-                .map(|p| p.dot(n))
-                .fold(f64::NEG_INFINITY, f64::max);
+            let sampled = pts.iter().map(|p| p.dot(n)).fold(f64::NEG_INFINITY, f64::max);
             // The support value is an upper bound of the samples, and the samples come within the
             // sampling resolution of it.
             assert!(
@@ -131,9 +120,7 @@ fn distance_of_discs_matches_closed_form() {
         if exact < -2.0 * r1.min(r2) {
             continue;
         }
-        worst.see((d.distance - exact).abs() / s, 1e-14, || {
-            format!("{r1} {r2} {p1} {p2}")
-        });
+        worst.see((d.distance - exact).abs() / s, 1e-14, || format!("{r1} {r2} {p1} {p2}"));
         if (p2 - p1).length() > 1e-3 * s {
             assert!((d.normal - (p2 - p1).normalize()).length() < 1e-6);
         }
@@ -188,12 +175,7 @@ fn distance_of_disc_and_ellipse_matches_closed_forms() {
             continue;
         }
         let exact = point_ellipse_distance(a, b, q) - r;
-        let d = reference_distance(
-            &e,
-            &Pose::IDENTITY,
-            &BallCurve { radius: r },
-            &Pose::new(q, 0.0),
-        );
+        let d = reference_distance(&e, &Pose::IDENTITY, &BallCurve { radius: r }, &Pose::new(q, 0.0));
         worst.see((d.distance - exact).abs() / s, 2e-14, || {
             format!("general {a} {b} {r} {q}")
         });
@@ -271,9 +253,7 @@ fn distance_of_rotated_ellipse_to_wall_and_overlapping_boxes_match_closed_forms(
             &sq,
             &Pose::new(Vector::new(2.0 * half - p, dy), FRAC_PI_4),
         );
-        worst.see((d.distance + p).abs() / s, 1e-14, || {
-            format!("boxes {half} {p} {dy}")
-        });
+        worst.see((d.distance + p).abs() / s, 1e-14, || format!("boxes {half} {p} {dy}"));
     }
 }
 
@@ -287,11 +267,7 @@ fn toi_of_discs_head_on_and_oblique_matches_closed_form() {
     for i in 0..300 {
         let s = rng.log_uniform(0.01, 100.0);
         let (r1, r2) = (s * rng.uniform(0.05, 1.0), s * rng.uniform(0.05, 1.0));
-        let target = if i % 2 == 0 {
-            0.0
-        } else {
-            s * rng.uniform(1e-6, 0.1)
-        };
+        let target = if i % 2 == 0 { 0.0 } else { s * rng.uniform(1e-6, 0.1) };
         let reach = r1 + r2 + target;
         let off = if i % 3 == 0 {
             0.0
@@ -336,11 +312,7 @@ fn toi_of_disc_hitting_ellipse_along_its_axes_matches_closed_form() {
         let s = rng.log_uniform(0.01, 100.0);
         let (a, b) = (s, s * rng.log_uniform(0.01, 1.0));
         let r = s * rng.uniform(0.01, 1.0);
-        let target = if i % 2 == 0 {
-            0.0
-        } else {
-            s * rng.uniform(1e-6, 0.05)
-        };
+        let target = if i % 2 == 0 { 0.0 } else { s * rng.uniform(1e-6, 0.05) };
         let v = s * rng.log_uniform(0.1, 20.0);
         let along_x = i % 4 < 2;
         let ext = if along_x { a } else { b };
@@ -355,9 +327,7 @@ fn toi_of_disc_hitting_ellipse_along_its_axes_matches_closed_form() {
         let r21 = reference_toi(&disc, &md, &ell, &me, 0.0, 1.0, target);
         for rr in [r12, r21] {
             let t = hit_time(&rr);
-            worst.see((t - exact).abs(), 1e-13, || {
-                format!("{a} {b} {r} {x0} {v}: {rr:?}")
-            });
+            worst.see((t - exact).abs(), 1e-13, || format!("{a} {b} {r} {x0} {v}: {rr:?}"));
         }
     }
 }
@@ -385,15 +355,7 @@ fn toi_of_spinning_ellipse_against_wall_matches_closed_form() {
                         let exact = spinning_ellipse_support_time(a, b, reach, omega);
                         let m = moving(Vector::ZERO, FRAC_PI_2, Vector::ZERO, omega);
                         let w = wall(x0, s, 3.0 * a);
-                        let r = reference_toi(
-                            &Ellipse::new(a, b),
-                            &m,
-                            &w,
-                            &still(Pose::IDENTITY),
-                            0.0,
-                            1.0,
-                            target,
-                        );
+                        let r = reference_toi(&Ellipse::new(a, b), &m, &w, &still(Pose::IDENTITY), 0.0, 1.0, target);
                         if exact > 1.0 {
                             assert_eq!(r.outcome, RefOutcome::Miss, "{r:?}");
                             continue;
@@ -408,10 +370,7 @@ fn toi_of_spinning_ellipse_against_wall_matches_closed_form() {
             }
         }
     }
-    println!(
-        "spinning ellipse-wall: max steps {}",
-        steps.iter().max().unwrap()
-    );
+    println!("spinning ellipse-wall: max steps {}", steps.iter().max().unwrap());
 }
 
 #[test]
@@ -468,9 +427,7 @@ fn toi_of_spinning_ellipse_against_disc_matches_closed_form() {
                             }
                             let t = hit_time(&res);
                             worst.see((t - exact).abs(), 1e-12, || {
-                                format!(
-                                    "a {a} b {b} r {r} ω {omega} L {l} target {target}: {res:?}"
-                                )
+                                format!("a {a} b {b} r {r} ω {omega} L {l} target {target}: {res:?}")
                             });
                             // The support-function shortcut is a strict lower bound (off-axis contact).
                             let shortcut = spinning_ellipse_support_time(a, b, l - rp, omega);
@@ -500,8 +457,7 @@ fn toi_of_spinning_square_corner_against_wall_matches_closed_form() {
                         let sq = RoundedPolygon::regular(4, big_r, rc);
                         let m = moving(Vector::ZERO, FRAC_PI_4, Vector::ZERO, omega);
                         let w = wall(x0, s, 3.0 * s);
-                        let r =
-                            reference_toi(&sq, &m, &w, &still(Pose::IDENTITY), 0.0, 1.0, target);
+                        let r = reference_toi(&sq, &m, &w, &still(Pose::IDENTITY), 0.0, 1.0, target);
                         let t = hit_time(&r);
                         worst.see((t - exact).abs(), 1e-12, || {
                             format!("R {big_r} rc {rc} ω {omega}: {r:?}")
@@ -530,17 +486,9 @@ fn toi_of_capsule_ellipse_translating_onto_a_disc_matches_closed_form() {
         let target = if i % 2 == 0 { 0.0 } else { 1e-6 * s };
         let v = s * rng.uniform(0.5, 5.0);
         let right = i % 4 < 2;
-        let (ext, dir) = if right {
-            (r1, Vector::X)
-        } else {
-            (r3, -Vector::X)
-        };
+        let (ext, dir) = if right { (r1, Vector::X) } else { (r3, -Vector::X) };
         // Off-axis height on the segment (right side) stays within its half-length r2.
-        let y = if right {
-            rng.uniform(-0.9, 0.9) * r2
-        } else {
-            0.0
-        };
+        let y = if right { rng.uniform(-0.9, 0.9) * r2 } else { 0.0 };
         let x = ext + rd + target + rng.uniform(0.0, 0.9) * v;
         let exact = (x - ext - rd - target) / v;
         let mc = still(Pose::IDENTITY);
@@ -566,18 +514,12 @@ fn scenario_generators_are_deterministic_finite_and_start_separated() {
             assert!(a.is_finite(), "{}", a.describe());
             assert!((a.t0, a.t1) == (0.0, 1.0) && a.target >= 0.0);
             let d0 = a.distance_at(a.t0);
-            assert!(
-                d0 - a.target > 0.0,
-                "starts within target: {}",
-                a.describe()
-            );
+            assert!(d0 - a.target > 0.0, "starts within target: {}", a.describe());
             assert!((0.005..=200.0).contains(&a.size()), "{}", a.size());
             // The motion reproduces the constructed configuration's gap at tc: distance at tc is
             // at least the aimed gap when that is positive.
             if a.aimed_gap > 0.0 {
-                assert!(
-                    a.distance_at(a.tc) - a.target >= a.aimed_gap * (1.0 - 1e-9) - 1e-12 * a.size()
-                );
+                assert!(a.distance_at(a.tc) - a.target >= a.aimed_gap * (1.0 - 1e-9) - 1e-12 * a.size());
             }
         }
     }
@@ -612,10 +554,7 @@ fn stats(scs: &[Scenario], refs: &[RefToi]) -> ClassStats {
         hits_by_kind: [0; 5],
     };
     for (sc, r) in scs.iter().zip(refs) {
-        let k = ScenarioKind::ALL
-            .iter()
-            .position(|&k| k == sc.kind)
-            .unwrap();
+        let k = ScenarioKind::ALL.iter().position(|&k| k == sc.kind).unwrap();
         st.kinds[k] += 1;
         st.steps.push(r.steps);
         st.evals += r.evals;
@@ -694,11 +633,7 @@ fn scenario_classes_hit_about_half_the_time_and_the_reference_is_consistent() {
                     // Just after the bracket the pair is within the target (bisection invariant).
                     let after = (time + 1e-12 * (sc.t1 - sc.t0)).min(sc.t1);
                     let da = sc.distance_at(after) - sc.target;
-                    assert!(
-                        da <= 1e-11 * size,
-                        "D − target = {da:e} after hit: {}",
-                        sc.describe()
-                    );
+                    assert!(da <= 1e-11 * size, "D − target = {da:e} after hit: {}", sc.describe());
                 }
             }
         }
@@ -761,16 +696,7 @@ fn reference_is_symmetric_in_object_order_and_scale_invariant() {
                 sc.target,
             );
             match (r.outcome, swapped.outcome) {
-                (
-                    RefOutcome::Hit {
-                        time: a,
-                        crossed: true,
-                    },
-                    RefOutcome::Hit {
-                        time: b,
-                        crossed: true,
-                    },
-                ) => {
+                (RefOutcome::Hit { time: a, crossed: true }, RefOutcome::Hit { time: b, crossed: true }) => {
                     // Time resolution: 1e-12 of the window, or the distance round-off over |D'|.
                     let res = 1e-12_f64.max(1e-13 * sc.size() / r.slope.abs());
                     worst.see((a - b).abs() / res, 1.0, || sc.describe());

@@ -247,8 +247,12 @@ fn polygon_pairs_handed_to_parry_are_measured_against_the_reference() {
         let TestShape::Ellipse(e) = &s.shape1 else { continue };
         let poly = RoundedPolygon::regular(5, e.half_x.max(e.half_y), 0.1 * e.half_x.max(e.half_y));
         let g2 = parry_shape(&s.shape2);
-        let ours = d.cast_shapes_nonlinear(&s.motion1, &poly, &s.motion2, &*g2, s.t0, s.t1, true).unwrap();
-        let parry = DefaultQueryDispatcher.cast_shapes_nonlinear(&s.motion1, &poly, &s.motion2, &*g2, s.t0, s.t1, true).unwrap();
+        let ours = d
+            .cast_shapes_nonlinear(&s.motion1, &poly, &s.motion2, &*g2, s.t0, s.t1, true)
+            .unwrap();
+        let parry = DefaultQueryDispatcher
+            .cast_shapes_nonlinear(&s.motion1, &poly, &s.motion2, &*g2, s.t0, s.t1, true)
+            .unwrap();
         if ours.map(|h| h.time_of_impact) == parry.map(|h| h.time_of_impact) {
             same_as_parry += 1;
         }

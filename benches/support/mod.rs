@@ -79,3 +79,21 @@ pub fn split_batch(class: ScenarioClass) -> (Vec<Case>, Vec<Case>) {
         .map(|seed| Case::new(class, seed))
         .partition(|c| c.ours(&d).is_some())
 }
+
+/// Whether a cast's answer (`Some(time)` for a hit) agrees with the reference: `None` when the
+/// reference was capped, `Some(true)` for a right answer. At a reference graze (a hit without a
+/// sign change, or a miss whose smallest gap is within `1e-9` of the size) either answer is
+/// right. At a crossing the answer must be a hit within `1e-6` of the window plus the time
+/// `1e-9·size / |dD/dt|` (ill-conditioned near-grazing crossings).
+pub fn judge(answer: Option<f64>, rf: &crate::common::RefToi, size: f64, window: f64) -> Option<bool> {
+    use crate::common::RefOutcome;
+    match rf.outcome {
+        RefOutcome::Capped { .. } => None,
+        RefOutcome::Hit { crossed: false, .. } => Some(true),
+        RefOutcome::Miss => Some(answer.is_none() || rf.min_gap < 1e-9 * size),
+        RefOutcome::Hit { time, crossed: true } => Some(match answer {
+            Some(a) => (a - time).abs() <= 1e-6 * window + 1e-9 * size / rf.slope.abs().max(1e-300),
+            None => false,
+        }),
+    }
+}

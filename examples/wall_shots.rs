@@ -1,0 +1,343 @@
+//! Shots of fast-spinning ellipses and rounded heptagons at a thin fixed wall in rapier, CCD on,
+//! over a grid of speeds (100–1000 m/s) and spins (0 to ±600 rad/s), three ways:
+//!
+//! * **smooth**: this crate's shapes with `NarrowPhase::with_query_dispatcher(SmoothDispatcher)`;
+//! * **rapier polygons**: the same shapes approximated by parry's polygons (a 32-gon inscribed in
+//!   the ellipse, `RoundConvexPolygon` for the heptagon), which rapier sweeps with its own routine,
+//!   and rapier's default narrow phase;
+//! * **parry default**: this crate's shapes under parry's `DefaultQueryDispatcher`
+//!   (`NarrowPhase::new()`).
+//!
+//! A shot *tunnels* when the body's centre gets past the wall's mid-plane. Its *first contact
+//! step* is the first step that ends with the shape within 0.01 of the wall's face (or past it);
+//! the *depth* there is how far the shape's deepest point (its support point along +x) is past
+//! the face (negative: stopped short). The depth is measured on the collider's own shape (the
+//! polygon for the polygon method).
+//!
+//! Run: `cargo run --release --example wall_shots [output folder]` (default `target/examples-out`);
+//! writes `wall_shots.svg`.
+
+#[path = "common/mod.rs"]
+mod common;
+
+use common::{max_x, out_dir, outline, Panel, Scene, Svg};
+use rapier2d_f64::prelude::*;
+use smooth_ccd2d::{Ellipse, RoundedPolygon, SmoothDispatcher};
+use std::time::Instant;
+
+/// The wall: centre x, half-thickness (0.05 thick), half-height.
+const WALL_X: f64 = 5.0;
+const WALL_HALF: f64 = 0.025;
+const WALL_HALF_HEIGHT: f64 = 3.0;
+const FACE: f64 = WALL_X - WALL_HALF;
+/// Steps per shot (1/60 s each).
+const STEPS: usize = 20;
+/// A step ending with the shape this close to the face counts as the first contact.
+const CONTACT_TOL: f64 = 0.01;
+const SPEEDS: usize = 10;
+const SPINS: usize = 10;
+
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Kind {
+    Ellipse,
+    Heptagon,
+}
+
+impl Kind {
+    fn short(self) -> &'static str {
+        match self {
+            Kind::Ellipse => "ellipse",
+            Kind::Heptagon => "heptagon",
+        }
+    }
+
+    fn name(self) -> &'static str {
+        match self {
+            Kind::Ellipse => "ellipse 0.5 x 0.2",
+            Kind::Heptagon => "rounded heptagon r 0.4",
+        }
+    }
+}
+
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Method {
+    Smooth,
+    RapierPolygons,
+    ParryDefault,
+}
+
+impl Method {
+    fn name(self) -> &'static str {
+        match self {
+            Method::Smooth => "SmoothDispatcher",
+            Method::RapierPolygons => "rapier polygons",
+            Method::ParryDefault => "parry default",
+        }
+    }
+
+    fn narrow_phase(self) -> NarrowPhase {
+        match self {
+            Method::Smooth => NarrowPhase::with_query_dispatcher(SmoothDispatcher::default()),
+            _ => NarrowPhase::new(),
+        }
+    }
+}
+
+const HEPTAGON_R: f64 = 0.4;
+
+fn shape(kind: Kind, method: Method) -> SharedShape {
+    match (kind, method) {
+        (Kind::Ellipse, Method::RapierPolygons) => {
+            let pts = (0..32)
+                .map(|i| {
+                    let e = std::f64::consts::TAU * i as f64 / 32.0;
+                    Vector::new(0.5 * e.cos(), 0.2 * e.sin())
+                })
+                .collect();
+            SharedShape::convex_polyline(pts).expect("a convex 32-gon")
+        }
+        (Kind::Ellipse, _) => SharedShape::new(Ellipse::new(0.5, 0.2)),
+        (Kind::Heptagon, m) => {
+            let p = RoundedPolygon::regular(7, HEPTAGON_R, 0.15 * HEPTAGON_R);
+            if m == Method::RapierPolygons {
+                SharedShape::new(p.to_parry().expect("a heptagon"))
+            } else {
+                SharedShape::new(p)
+            }
+        }
+    }
+}
+
+#[derive(Clone, Copy)]
+struct Shot {
+    speed: f64,
+    spin: f64,
+    angle0: f64,
+}
+
+/// 10 speeds × 10 spins: speeds 100, 200, …, 1000 m/s (1.7 to 17 m per step); spins 0, +67, −133,
+/// …, −600 rad/s (up to 10 rad per step); initial angles spread.
+fn shots() -> Vec<Shot> {
+    let mut v = Vec::new();
+    for i in 0..SPEEDS {
+        for j in 0..SPINS {
+            let sign = if j % 2 == 0 { 1.0 } else { -1.0 };
+            v.push(Shot {
+                speed: 100.0 * (i + 1) as f64,
+                spin: sign * 600.0 * j as f64 / (SPINS - 1) as f64,
+                angle0: 0.37 * (i * SPINS + j) as f64,
+            });
+        }
+    }
+    v
+}
+
+struct Outcome {
+    /// Body pose at the start and after each step.
+    poses: Vec<Pose>,
+    tunnelled: bool,
+    /// Index into `poses` of the first contact, and the depth there.
+    first_contact: Option<(usize, f64)>,
+    /// Largest depth over the whole run.
+    max_depth: f64,
+}
+
+fn run(kind: Kind, method: Method, shot: Shot) -> Outcome {
+    let mut scene = Scene::new(method.narrow_phase(), Vector::ZERO);
+    scene.insert(
+        RigidBodyBuilder::fixed().translation(Vector::new(WALL_X, 0.0)),
+        ColliderBuilder::cuboid(WALL_HALF, WALL_HALF_HEIGHT),
+    );
+    let shape = shape(kind, method);
+    let (h, _) = scene.insert(
+        RigidBodyBuilder::dynamic()
+            .translation(Vector::ZERO)
+            .rotation(shot.angle0)
+            .linvel(Vector::new(shot.speed, 0.0))
+            .angvel(shot.spin)
+            .ccd_enabled(true)
+            .can_sleep(false),
+        ColliderBuilder::new(shape.clone()),
+    );
+    let mut poses = vec![*scene.bodies[h].position()];
+    for _ in 0..STEPS {
+        scene.step();
+        poses.push(*scene.bodies[h].position());
+    }
+    let tunnelled = poses.iter().any(|p| p.translation.x > WALL_X);
+    let depths: Vec<f64> = poses.iter().map(|p| max_x(shape.as_ref(), p) - FACE).collect();
+    let first_contact = if tunnelled {
+        None
+    } else {
+        depths.iter().position(|&d| d >= -CONTACT_TOL).map(|k| (k, depths[k]))
+    };
+    Outcome {
+        poses,
+        tunnelled,
+        first_contact,
+        max_depth: depths.iter().fold(f64::NEG_INFINITY, |m, &d| m.max(d)),
+    }
+}
+
+struct Row {
+    kind: Kind,
+    method: Method,
+    outcomes: Vec<Outcome>,
+    seconds: f64,
+}
+
+fn main() {
+    let dir = out_dir();
+    let shots = shots();
+    let kinds = [Kind::Ellipse, Kind::Heptagon];
+    let methods = [Method::Smooth, Method::RapierPolygons, Method::ParryDefault];
+    let mut rows = Vec::new();
+    for kind in kinds {
+        for method in methods {
+            let t = Instant::now();
+            let outcomes = shots.iter().map(|&s| run(kind, method, s)).collect();
+            rows.push(Row {
+                kind,
+                method,
+                outcomes,
+                seconds: t.elapsed().as_secs_f64(),
+            });
+        }
+    }
+
+    println!(
+        "wall shots: wall 0.05 thick (face at x = {FACE}), {} speeds 100-1000 m/s x {} spins 0-600 rad/s, \
+         dt = 1/60 s, CCD on, {STEPS} steps per shot",
+        SPEEDS, SPINS
+    );
+    println!("depth = how far the shape's deepest point is past the wall face at the first contact step (< 0: short)");
+    println!(
+        "{:<24} {:<18} {:>5} {:>10} {:>12} {:>12} {:>14} {:>8}",
+        "shape", "method", "shots", "tunnelled", "worst depth", "most short", "max depth run", "time s"
+    );
+    for r in &rows {
+        let tunnelled = r.outcomes.iter().filter(|o| o.tunnelled).count();
+        let firsts: Vec<f64> = r.outcomes.iter().filter_map(|o| o.first_contact.map(|f| f.1)).collect();
+        let worst = firsts.iter().fold(f64::NEG_INFINITY, |m, &d| m.max(d));
+        let short = firsts.iter().fold(f64::INFINITY, |m, &d| m.min(d));
+        let max_run = r
+            .outcomes
+            .iter()
+            .filter(|o| !o.tunnelled)
+            .fold(f64::NEG_INFINITY, |m, o| m.max(o.max_depth));
+        println!(
+            "{:<24} {:<18} {:>5} {:>10} {:>12.3e} {:>12.3e} {:>14.3e} {:>8.2}",
+            r.kind.name(),
+            r.method.name(),
+            r.outcomes.len(),
+            tunnelled,
+            worst,
+            short,
+            max_run,
+            r.seconds
+        );
+    }
+    for r in &rows {
+        let through: Vec<String> = r
+            .outcomes
+            .iter()
+            .zip(&shots)
+            .filter(|(o, _)| o.tunnelled)
+            .map(|(_, s)| format!("{}/{:+.0}", s.speed, s.spin))
+            .collect();
+        if !through.is_empty() && through.len() <= 8 {
+            println!(
+                "tunnelled ({}, {}; speed m/s / spin rad/s): {}",
+                r.kind.name(),
+                r.method.name(),
+                through.join(", ")
+            );
+        }
+    }
+
+    let path = dir.join("wall_shots.svg");
+    draw(&rows, &path);
+    println!("wrote {}", path.display());
+}
+
+/// One panel per shape kind × method; one lane per speed showing that speed's worst shot
+/// (tunnelled, else deepest at first contact): the outline at every step near the wall (grey),
+/// at the first contact step (blue, red when past the face), the centre's path (green).
+fn draw(rows: &[Row], path: &std::path::Path) {
+    let (pw, margin, top) = (330.0, 30.0, 40.0);
+    let (x0, x1) = (3.2, 6.8);
+    let lane = 1.1;
+    let (y0, y1) = (-0.5 * lane, (SPEEDS as f64 - 0.5) * lane);
+    let ph = pw * (y1 - y0) / (x1 - x0);
+    let mut svg = Svg::new(3.0 * (pw + margin) + margin, 2.0 * (ph + top) + top);
+    svg.text(
+        margin,
+        18.0,
+        13.0,
+        "Shots at a 0.05-thick wall, one lane per speed (100 m/s at the bottom, 1000 at the top), worst spin of each; blue/red: \
+         first contact (red: past the face), red: tunnelled",
+    );
+    for (idx, r) in rows.iter().enumerate() {
+        let (row, col) = (idx / 3, idx % 3);
+        let p = Panel::fit(
+            margin + col as f64 * (pw + margin),
+            top + 20.0 + row as f64 * (ph + top),
+            pw,
+            x0,
+            x1,
+            y0,
+            y1,
+        );
+        let tunnelled = r.outcomes.iter().filter(|o| o.tunnelled).count();
+        svg.begin_panel(
+            &p,
+            &format!("{}: {} ({tunnelled} tunnelled)", r.kind.short(), r.method.name()),
+        );
+        let shape = shape(r.kind, r.method);
+        for s in 0..SPEEDS {
+            let lane_y = s as f64 * lane;
+            let shift = Vector::new(0.0, lane_y);
+            let score = |o: &Outcome| {
+                if o.tunnelled {
+                    f64::INFINITY
+                } else {
+                    o.first_contact.map_or(f64::NEG_INFINITY, |f| f.1)
+                }
+            };
+            let o = r.outcomes[s * SPINS..(s + 1) * SPINS]
+                .iter()
+                .max_by(|a, b| score(a).total_cmp(&score(b)))
+                .expect("a lane of shots");
+            let wall = [
+                Vector::new(FACE, lane_y - 0.6),
+                Vector::new(WALL_X + WALL_HALF, lane_y - 0.6),
+                Vector::new(WALL_X + WALL_HALF, lane_y + 0.6),
+                Vector::new(FACE, lane_y + 0.6),
+            ];
+            svg.polyline(&p, &wall, true, "#333", 0.5, "#999");
+            let first = o.first_contact.map(|f| f.0);
+            for (k, pose) in o.poses.iter().enumerate() {
+                if Some(k) != first {
+                    let pts: Vec<Vector> = outline(shape.as_ref(), pose, 48).iter().map(|&q| q + shift).collect();
+                    let stroke = if o.tunnelled { "#d62728" } else { "#aaa" };
+                    svg.polyline(&p, &pts, true, stroke, 0.5, "none");
+                }
+            }
+            if let Some((k, depth)) = o.first_contact {
+                let pts: Vec<Vector> = outline(shape.as_ref(), &o.poses[k], 48)
+                    .iter()
+                    .map(|&q| q + shift)
+                    .collect();
+                let stroke = if depth > 0.0 { "#d62728" } else { "#1f77b4" };
+                svg.polyline(&p, &pts, true, stroke, 1.2, "none");
+            }
+            let centres: Vec<Vector> = o.poses.iter().map(|q| q.translation + shift).collect();
+            svg.polyline(&p, &centres, false, "#2ca02c", 0.6, "none");
+            for c in &centres {
+                svg.circle(&p, *c, 1.2, "#2ca02c");
+            }
+        }
+        svg.end_panel();
+    }
+    svg.save(path);
+}
