@@ -22,14 +22,46 @@ use crate::math::Vector;
 /// An ellipse centred at the origin with semi-axes `half_x` (a) and `half_y` (b).
 #[derive(Copy, Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(try_from = "[f64; 2]", into = "[f64; 2]"))]
 pub struct Ellipse {
-    /// Semi-axis along x (a).
-    pub half_x: f64,
-    /// Semi-axis along y (b).
-    pub half_y: f64,
+    /// Semi-axis along x (a); finite and positive (checked by the constructors).
+    half_x: f64,
+    /// Semi-axis along y (b); finite and positive (checked by the constructors).
+    half_y: f64,
+}
+
+impl TryFrom<[f64; 2]> for Ellipse {
+    type Error = ShapeError;
+    fn try_from(h: [f64; 2]) -> Result<Self, ShapeError> {
+        Self::try_new(h[0], h[1])
+    }
+}
+
+impl From<Ellipse> for [f64; 2] {
+    fn from(e: Ellipse) -> Self {
+        [e.half_x, e.half_y]
+    }
 }
 
 impl Ellipse {
+    /// The semi-axis along x (a).
+    #[inline]
+    pub fn half_x(&self) -> f64 {
+        self.half_x
+    }
+
+    /// The semi-axis along y (b).
+    #[inline]
+    pub fn half_y(&self) -> f64 {
+        self.half_y
+    }
+
+    /// The semi-axes `(a, b)` as a vector.
+    #[inline]
+    pub fn half_extents(&self) -> Vector {
+        Vector::new(self.half_x, self.half_y)
+    }
+
     /// An ellipse with semi-axes `half_x`, `half_y`.
     ///
     /// # Panics

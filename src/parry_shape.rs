@@ -744,12 +744,12 @@ fn ellipse_root(r0: f64, rm1: f64, z0: f64, z1: f64, g: f64) -> f64 {
 impl Ellipse {
     /// Outward unit normal at a boundary point `p` (the normalised gradient of x²/a² + y²/b²).
     fn normal_at_point(&self, p: Vector) -> Vector {
-        let (a, b) = (self.half_x, self.half_y);
+        let (a, b) = (self.half_x(), self.half_y());
         unit_or_x(Vector::new(p.x / (a * a), p.y / (b * b)))
     }
 
     fn contains(&self, p: Vector) -> bool {
-        let (u, v) = (p.x / self.half_x, p.y / self.half_y);
+        let (u, v) = (p.x / self.half_x(), p.y / self.half_y());
         u * u + v * v <= 1.0
     }
 }
@@ -764,11 +764,11 @@ impl SupportMap for Ellipse {
 impl PolygonalFeatureMap for Ellipse {
     fn local_support_feature(&self, dir: Vector, out_feature: &mut PolygonalFeature) {
         let n = unit_or_x(dir);
-        let (a2, b2) = (self.half_x * self.half_x, self.half_y * self.half_y);
+        let (a2, b2) = (self.half_x() * self.half_x(), self.half_y() * self.half_y());
         let h = (a2 * n.x * n.x + b2 * n.y * n.y).sqrt();
         let p = Vector::new(a2 * n.x, b2 * n.y) / h;
         let rho = a2 * b2 / (h * h * h);
-        tangent_feature(p, n, rho, self.half_x.max(self.half_y), out_feature);
+        tangent_feature(p, n, rho, self.half_x().max(self.half_y()), out_feature);
     }
 }
 
@@ -779,7 +779,7 @@ impl RayCast for Ellipse {
         max_time_of_impact: Real,
         solid: bool,
     ) -> Option<RayIntersection> {
-        let (a, b) = (self.half_x, self.half_y);
+        let (a, b) = (self.half_x(), self.half_y());
         let (o, d) = (ray.origin, ray.dir);
         if !(o.is_finite() && d.is_finite()) || max_time_of_impact.is_nan() {
             return None;
@@ -828,13 +828,13 @@ impl RayCast for Ellipse {
 impl PointQuery for Ellipse {
     fn project_local_point(&self, pt: Vector, solid: bool) -> PointProjection {
         if !pt.is_finite() {
-            return PointProjection::new(false, Vector::new(self.half_x, 0.0));
+            return PointProjection::new(false, Vector::new(self.half_x(), 0.0));
         }
         let inside = self.contains(pt);
         if inside && solid {
             return PointProjection::new(true, pt);
         }
-        PointProjection::new(inside, ellipse_closest_point(self.half_x, self.half_y, pt))
+        PointProjection::new(inside, ellipse_closest_point(self.half_x(), self.half_y(), pt))
     }
 
     fn project_local_point_and_get_feature(&self, pt: Vector) -> (PointProjection, FeatureId) {
@@ -848,7 +848,7 @@ impl PointQuery for Ellipse {
 
 impl Shape for Ellipse {
     fn compute_local_aabb(&self) -> Aabb {
-        let h = Vector::new(self.half_x, self.half_y);
+        let h = Vector::new(self.half_x(), self.half_y());
         Aabb::new(-h, h)
     }
 
@@ -861,12 +861,12 @@ impl Shape for Ellipse {
     }
 
     fn scale_dyn(&self, scale: Vector, _num_subdivisions: u32) -> Option<Box<dyn Shape>> {
-        let e = Ellipse::try_new(self.half_x * scale.x.abs(), self.half_y * scale.y.abs()).ok()?;
+        let e = Ellipse::try_new(self.half_x() * scale.x.abs(), self.half_y() * scale.y.abs()).ok()?;
         Some(Box::new(e))
     }
 
     fn mass_properties(&self, density: Real) -> MassProperties {
-        let (a, b) = (self.half_x, self.half_y);
+        let (a, b) = (self.half_x(), self.half_y());
         let mass = density * PI * a * b;
         MassProperties::new(Vector::ZERO, mass, mass * (a * a + b * b) / 4.0)
     }
@@ -880,11 +880,11 @@ impl Shape for Ellipse {
     }
 
     fn ccd_thickness(&self) -> Real {
-        self.half_x.min(self.half_y)
+        self.half_x().min(self.half_y())
     }
 
     fn ccd_angular_thickness(&self) -> Real {
-        if self.half_x == self.half_y {
+        if self.half_x() == self.half_y() {
             PI
         } else {
             FRAC_PI_2

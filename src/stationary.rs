@@ -223,6 +223,10 @@ impl<'a> Solver<'a> {
     }
 }
 
+/// Capacity of the branch-and-bound node stack; reaching it ends the search with
+/// [`DistanceStatus::OutOfIterations`] (never observed: the depth stays below 64).
+const NODE_STACK: usize = 96;
+
 /// One endpoint of a branch-and-bound interval over the normal angle θ.
 #[derive(Copy, Clone)]
 struct Node {
@@ -300,9 +304,13 @@ pub(crate) fn stationary_in_frame(
     let lip = obj1.bounding_radius() + obj2.bounding_radius() + (frame.q - frame.rotate(frame.center1)).length();
     let tol = options.distance_tolerance * size;
     const SEEDS: usize = 16;
-    let mut stack: Vec<(Node, Node)> = Vec::with_capacity(64);
+    // Depth-first search over the intervals between consecutive nodes of a fixed-size stack
+    // (no heap allocation): nodes[..n] are sorted by θ and the interval being examined is the
+    // last pair. Each split adds one node and each pruned interval removes one, so the stack
+    // holds SEEDS + 1 nodes plus the current depth, about 45 for midpoint splits to 1e-14.
     let first = node_at(&mut sv, theta_start).ok_or(QueryError::Degenerate)?;
-    let mut prev = first;
+    let mut nodes = [first; NODE_STACK];
+    let mut n = 1;
     for k in 1..=SEEDS {
         let th = theta_start + 2.0 * PI * k as f64 / SEEDS as f64;
         let node = if k == SEEDS {
@@ -311,12 +319,13 @@ pub(crate) fn stationary_in_frame(
             node_at(&mut sv, th).ok_or(QueryError::Degenerate)?
         };
         consider(&mut best, node.phi, &node.jet);
-        stack.push((prev, node));
-        prev = node;
+        nodes[n] = node;
+        n += 1;
     }
     let mut status = DistanceStatus::Penetrating;
-    while let Some((a, b)) = stack.pop() {
-        if sv.evaluations >= options.max_evaluations {
+    while n >= 2 {
+        let (a, b) = (nodes[n - 2], nodes[n - 1]);
+        if sv.evaluations >= options.max_evaluations || n == NODE_STACK {
             status = DistanceStatus::OutOfIterations;
             break;
         }
@@ -325,6 +334,7 @@ pub(crate) fn stationary_in_frame(
         let m = (-(a.jet.fwd.v + b.jet.fwd.v) * 0.5 + lip * delta * 0.5).max(0.0);
         let ub = envelope_max(a.jet.fwd.v, -a.jet.side.v, b.jet.fwd.v, -b.jet.side.v, m, delta);
         if ub <= best_v + tol || delta < 1e-14 {
+            n -= 1;
             continue;
         }
         // A sign change S(a) < 0 < S(b) holds a local maximum: solve for it.
@@ -348,8 +358,9 @@ pub(crate) fn stationary_in_frame(
             None => return Err(QueryError::Degenerate),
         };
         consider(&mut best, mid.phi, &mid.jet);
-        stack.push((a, mid));
-        stack.push((mid, b));
+        nodes[n - 1] = mid;
+        nodes[n] = b;
+        n += 1;
     }
     let (mut phi, mut j) = best.ok_or(QueryError::Degenerate)?;
     // On a flat piece of object1 F does not depend on φ, so the search may end anywhere along it;

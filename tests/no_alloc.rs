@@ -155,10 +155,10 @@ fn hand_built_curves_allocate_nothing_when_separated() {
     }
 }
 
-/// Prints what penetrating stationary distances allocate (no assertion: the global branch and
-/// bound may use a work list).
+/// Penetrating stationary distances run the global branch and bound on a fixed-size node stack:
+/// no allocation either.
 #[test]
-fn print_allocations_of_penetrating_distances() {
+fn penetrating_distances_allocate_nothing() {
     let dopts = DistanceOptions::default();
     println!("| class | penetrating queries | allocating | max allocations | max bytes |");
     println!("|---|---:|---:|---:|---:|");
@@ -182,6 +182,8 @@ fn print_allocations_of_penetrating_distances() {
             }
         }
         println!("| {} | {total} | {allocating} | {max_n} | {max_b} |", class.name());
+        assert!(total > 0, "no penetrating case generated for {}", class.name());
+        assert_eq!(allocating, 0, "{}: {allocating} penetrating queries allocated", class.name());
     }
 }
 

@@ -843,7 +843,7 @@ fn scale_dyn_follows_the_shapes_rules() {
     let e = Ellipse::new(2.0, 0.5);
     let s = e.scale_dyn(Vector::new(-0.5, 3.0), 8).unwrap();
     let s = s.as_shape::<Ellipse>().unwrap();
-    assert_eq!((s.half_x, s.half_y), (1.0, 1.5));
+    assert_eq!((s.half_x(), s.half_y()), (1.0, 1.5));
     assert!(e.scale_dyn(Vector::new(0.0, 1.0), 8).is_none());
 
     let p = RoundedPolygon::regular(5, 1.0, 0.2);

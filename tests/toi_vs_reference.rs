@@ -245,7 +245,7 @@ fn polygon_pairs_handed_to_parry_are_measured_against_the_reference() {
     for seed in 0..n as u64 {
         let s = generate(ScenarioClass::EllipseRoundedPolygon, seed + 200_000);
         let TestShape::Ellipse(e) = &s.shape1 else { continue };
-        let poly = RoundedPolygon::regular(5, e.half_x.max(e.half_y), 0.1 * e.half_x.max(e.half_y));
+        let poly = RoundedPolygon::regular(5, e.half_x().max(e.half_y()), 0.1 * e.half_x().max(e.half_y()));
         let g2 = parry_shape(&s.shape2);
         let ours = d
             .cast_shapes_nonlinear(&s.motion1, &poly, &s.motion2, &*g2, s.t0, s.t1, true)

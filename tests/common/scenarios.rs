@@ -99,7 +99,7 @@ impl TestShape {
     /// A short description (type and parameters).
     pub fn describe(&self) -> String {
         match self {
-            TestShape::Ellipse(e) => format!("Ellipse({:e}, {:e})", e.half_x, e.half_y),
+            TestShape::Ellipse(e) => format!("Ellipse({:e}, {:e})", e.half_x(), e.half_y()),
             TestShape::Ball(b) => format!("Ball({:e})", b.radius),
             TestShape::RoundedPolygon(p) => {
                 format!(
