@@ -183,7 +183,12 @@ fn penetrating_distances_allocate_nothing() {
         }
         println!("| {} | {total} | {allocating} | {max_n} | {max_b} |", class.name());
         assert!(total > 0, "no penetrating case generated for {}", class.name());
-        assert_eq!(allocating, 0, "{}: {allocating} penetrating queries allocated", class.name());
+        assert_eq!(
+            allocating,
+            0,
+            "{}: {allocating} penetrating queries allocated",
+            class.name()
+        );
     }
 }
 
