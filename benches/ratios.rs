@@ -1,14 +1,18 @@
-//! Speed ratios parry / ours per scenario class and outcome, with the accuracy beside them, and
-//! how the cost grows with turns before impact, axis ratio and angular velocity. Prints markdown
-//! tables.
+//! Speed ratios parry / ours with the accuracy beside them, as markdown tables: the time of
+//! impact per scenario class and outcome (and per scenario kind), the stationary distance, the
+//! contact manifolds, parry's Box2D-style `sweep_time_of_impact` where it applies, how the time
+//! of impact's cost grows with turns before impact, axis ratio and angular velocity (also drawn
+//! to `docs/figures/toi_growth.png`), and a rapier step of the pile.
 //!
-//! Run with `cargo bench --bench ratios`.
+//! Run with `cargo bench --bench ratios` (all sections, a few minutes on two cores), or name
+//! sections: `cargo bench --bench ratios -- classes distance manifolds sweep growth pile`.
 //!
 //! Method: every scenario is timed on its own, for ours and for parry alternately, in several
-//! rounds. Each timing repeats the query enough times to last at least `MIN_TIMING` (far above
-//! the timer's resolution), and a scenario's time is the minimum over the rounds (robust
-//! against interference from other processes). Both casts run through the dispatchers with
-//! `stop_at_penetration = true` and parry's target distance 0.
+//! rounds. Each timing repeats the query enough times to last at least 200 µs (far above the
+//! timer's resolution), and a scenario's time is the minimum over the rounds (robust against
+//! interference from other processes). Ratios are parry's time over ours: above 1, ours is
+//! faster. The casts run through the dispatchers with `stop_at_penetration = true` and target
+//! distance 0.
 
 #[path = "../tests/common/mod.rs"]
 #[allow(unused_imports)]
@@ -24,64 +28,10 @@ use parry2d_f64::query::{
 use parry2d_f64::shape::{Ball, Shape};
 use smooth_ccd2d::{time_of_impact, BallCurve, ConvexCurve, Ellipse, SmoothDispatcher, ToiOptions};
 use std::hint::black_box;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 use support::{split_batch, Case};
 
-const MIN_TIMING: Duration = Duration::from_micros(200);
-const ROUNDS: usize = 5;
-
-/// Repetitions of `f` that take at least `MIN_TIMING`.
-fn calibrate(f: &mut dyn FnMut()) -> u32 {
-    let mut reps = 1u32;
-    loop {
-        let start = Instant::now();
-        for _ in 0..reps {
-            f();
-        }
-        let el = start.elapsed();
-        if el >= MIN_TIMING {
-            return reps;
-        }
-        let want = (MIN_TIMING.as_secs_f64() / el.as_secs_f64().max(1e-9) * 1.2).ceil();
-        reps = (want as u32).clamp(reps.saturating_mul(2), reps.saturating_mul(100).max(2));
-    }
-}
-
-/// Seconds per call of `f`, repeated `reps` times.
-fn time_once(f: &mut dyn FnMut(), reps: u32) -> f64 {
-    let start = Instant::now();
-    for _ in 0..reps {
-        f();
-    }
-    start.elapsed().as_secs_f64() / reps as f64
-}
-
-/// Per-query seconds of `a` and `b` (minimum over `ROUNDS` alternating rounds).
-fn time_pair(a: &mut dyn FnMut(), b: &mut dyn FnMut()) -> (f64, f64) {
-    let (ra, rb) = (calibrate(a), calibrate(b));
-    let (mut ta, mut tb) = (f64::INFINITY, f64::INFINITY);
-    for round in 0..ROUNDS {
-        if round % 2 == 0 {
-            ta = ta.min(time_once(a, ra));
-            tb = tb.min(time_once(b, rb));
-        } else {
-            tb = tb.min(time_once(b, rb));
-            ta = ta.min(time_once(a, ra));
-        }
-    }
-    (ta, tb)
-}
-
-/// The q-quantile (nearest rank) of `v`; NaN for an empty slice.
-fn quantile(v: &[f64], q: f64) -> f64 {
-    if v.is_empty() {
-        return f64::NAN;
-    }
-    let mut s = v.to_vec();
-    s.sort_by(f64::total_cmp);
-    let i = ((q * s.len() as f64).ceil() as usize).clamp(1, s.len()) - 1;
-    s[i]
-}
+use support::timing::{calibrate, quantile, time_once, time_pair, ROUNDS};
 
 fn us(x: f64) -> String {
     if x.is_nan() {
@@ -174,6 +124,10 @@ fn class_tables() {
         "| class | outcome (ours) | n | ours median µs | parry median µs | ratio of medians | ours p90 µs | parry p90 µs | ratio of p90s | per-scenario ratio median | per-scenario ratio p10 | per-scenario ratio min | hit/miss agree | median \\|Δt\\| both hit | max \\|Δt\\| both hit | wrong vs reference: ours / parry (undecided) | median \\|t − t_ref\\| ours / parry | parry hits with status Failed | parry hits early / late vs reference |".to_string(),
         "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|".to_string(),
     ];
+    let mut compact = vec![
+        "| class | outcome (ours) | n | ratio of medians | ratio of p90s | per-scenario ratio median / p10 | wrong vs reference: ours / parry | median \\|t − t_ref\\|/window ours / parry |".to_string(),
+        "|---|---|---:|---:|---:|---:|---:|---:|".to_string(),
+    ];
     let mut kinds = vec![
         "| class | kind | n | per-scenario ratio median | p10 | min | ours median µs | parry median µs | wrong vs reference: ours / parry (undecided) |".to_string(),
         "|---|---|---:|---:|---:|---:|---:|---:|---:|".to_string(),
@@ -212,6 +166,22 @@ fn class_tables() {
                 .count();
             let ours_err: Vec<f64> = t.iter().filter_map(|x| x.ours_err).collect();
             let parry_err: Vec<f64> = t.iter().filter_map(|x| x.parry_err).collect();
+            compact.push(format!(
+                "| {} | {label} | {} | {:.2} | {:.2} | {:.2} / {:.2} | {ow} / {pw}{} | {} / {} |",
+                class.name(),
+                t.len(),
+                quantile(&parry, 0.5) / quantile(&ours, 0.5),
+                quantile(&parry, 0.9) / quantile(&ours, 0.9),
+                quantile(&ratio, 0.5),
+                quantile(&ratio, 0.1),
+                if und > 0 {
+                    format!(" ({und} undecided)")
+                } else {
+                    String::new()
+                },
+                sci(quantile(&ours_err, 0.5)),
+                sci(quantile(&parry_err, 0.5)),
+            ));
             main.push(format!(
                 "| {} | {label} | {} | {} | {} | {:.2} | {} | {} | {:.2} | {:.2} | {:.2} | {:.2} | {}/{} | {} | {} | {ow} / {pw} ({und}) | {} / {} | {failed} | {early} / {late} |",
                 class.name(),
@@ -255,7 +225,16 @@ fn class_tables() {
             ));
         }
     }
-    println!("## Speed ratio parry / ours per class and outcome\n");
+    println!("## Time of impact: speed ratio parry / ours per class and outcome\n");
+    println!(
+        "{} scenarios per class (seeds 0..{}), split by our outcome. Ratios are parry's time over ours (above 1: ours is faster); \"wrong\" counts answers the reference contradicts (a missed or false impact, or a time off by more than 1e-6 of the window).\n",
+        support::BATCH,
+        support::BATCH
+    );
+    for l in compact {
+        println!("{l}");
+    }
+    println!("\n### Details\n");
     println!(
         "{} scenarios per class (seeds 0..{}), split by our outcome; times per query, minimum of {ROUNDS} alternating rounds.\n",
         support::BATCH,
@@ -332,7 +311,7 @@ const PARRY_LIMIT: Duration = Duration::from_secs(10);
 /// against the reference; parry's hits with status `Failed`, and configurations where parry did
 /// not return within `PARRY_LIMIT` (not timed); largest |t − t_ref| of each where both it and
 /// the reference hit; median reference time of impact.
-fn growth_row(label: String, configs: &[Growth], d: &SmoothDispatcher) -> String {
+fn growth_row(label: String, configs: &[Growth], d: &SmoothDispatcher) -> (String, f64, f64, bool) {
     let ball = Ball::new(DISC);
     let disc = BallCurve { radius: DISC };
     let (mut to, mut tp, mut steps, mut ratio, mut tref) = (vec![], vec![], vec![], vec![], vec![]);
@@ -408,7 +387,7 @@ fn growth_row(label: String, configs: &[Growth], d: &SmoothDispatcher) -> String
             }
         }
     }
-    format!(
+    let row = format!(
         "| {label} | {} | {:.0} | {} | {} | {} | {ours_wrong} / {parry_wrong} of {} ({undecided}) | {early} / {late} | {failed} | {hung} | {} / {} | {} |",
         us(quantile(&to, 0.5)),
         quantile(&steps, 0.5),
@@ -419,7 +398,8 @@ fn growth_row(label: String, configs: &[Growth], d: &SmoothDispatcher) -> String
         sci(quantile(&ours_err, 1.0)),
         sci(quantile(&parry_err, 1.0)),
         sci(quantile(&tref, 0.5)),
-    )
+    );
+    (row, quantile(&to, 0.5), quantile(&tp, 0.5), parry_wrong > 0)
 }
 
 fn phases() -> impl Iterator<Item = f64> {
@@ -436,40 +416,544 @@ fn growth_tables() {
     println!("\n## Growth: axis ratio\n");
     println!("Ellipse 1 × 1/k spinning at 5 rad/s, disc of radius 0.5 closing a gap of 1 along x at speed 2 (t_c = 0.5); window [0, 1]; {PHASES} initial angles.\n");
     header("axis ratio k");
-    for k in [1.0, 10.0, 100.0, 1000.0] {
+    let mut panels = Vec::new();
+    let mut points = Vec::new();
+    for k in [1.0, 3.0, 10.0, 30.0, 100.0, 300.0, 1000.0] {
         let cfg: Vec<Growth> = phases().map(|p| growth(1.0, 1.0 / k, 5.0, 1.0, 0.5, 1.0, p)).collect();
-        println!("{}", growth_row(format!("{k}"), &cfg, &d));
+        let (row, o, p, w) = growth_row(format!("{k}"), &cfg, &d);
+        println!("{row}");
+        points.push((k, o, p, w));
     }
+    panels.push(("axis ratio (5 rad/s)", "axis ratio k of the ellipse 1 × 1/k", points));
 
     println!("\n## Growth: angular velocity\n");
     println!("Ellipse 1 × 0.25 spinning at ω, disc of radius 0.5 closing a gap of 1 along x at speed 2 (t_c = 0.5); window [0, 1]; {PHASES} initial angles.\n");
     header("ω rad/s");
+    let mut points = Vec::new();
     for w in [0.0, 1.0, 3.0, 10.0, 30.0, 60.0, 100.0, 300.0] {
         let cfg: Vec<Growth> = phases().map(|p| growth(1.0, 0.25, w, 1.0, 0.5, 1.0, p)).collect();
-        println!("{}", growth_row(format!("{w}"), &cfg, &d));
+        let (row, o, p, wrong) = growth_row(format!("{w}"), &cfg, &d);
+        println!("{row}");
+        if w > 0.0 {
+            points.push((w, o, p, wrong));
+        }
     }
+    panels.push(("angular velocity (window 1 s)", "ω (rad/s)", points));
 
     println!("\n## Growth: turns before impact\n");
     println!("Ellipse 1 × 0.25 spinning at 20 rad/s, disc of radius 0.5 closing a gap of 0.5 along x slowly enough that the ellipse turns N times before the gap closes (t_c = 2πN/ω); window [0, t_c + 2π/ω]; {PHASES} initial angles.\n");
     header("turns N");
     let omega = 20.0;
+    let mut points = Vec::new();
     for n in [1u32, 2, 4, 8, 16, 32, 64] {
         let tc = TAU * n as f64 / omega;
         let t1 = tc + TAU / omega;
         let cfg: Vec<Growth> = phases().map(|p| growth(1.0, 0.25, omega, 0.5, tc, t1, p)).collect();
-        println!("{}", growth_row(n.to_string(), &cfg, &d));
+        let (row, o, p, w) = growth_row(n.to_string(), &cfg, &d);
+        println!("{row}");
+        points.push((n as f64, o, p, w));
+    }
+    panels.push(("turns before impact (20 rad/s)", "turns N before impact", points));
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/figures/toi_growth.png");
+    match plot_growth(&path, &panels) {
+        Ok(()) => println!(
+            "\nPlot: `{}`.",
+            path.strip_prefix(env!("CARGO_MANIFEST_DIR")).unwrap_or(&path).display()
+        ),
+        Err(e) => println!("\n(plot not written: {e})"),
     }
 }
 
+/// One panel of the growth plot: title, x label, (x, ours s, parry s or NaN, parry wrong in some
+/// of the configurations).
+type Panel = (&'static str, &'static str, Vec<(f64, f64, f64, bool)>);
+
+/// Draws the growth panels side by side (log–log, median µs per query of ours and parry).
+fn plot_growth(path: &std::path::Path, panels: &[Panel]) -> Result<(), Box<dyn std::error::Error>> {
+    use plotters::prelude::*;
+    use plotters::style::FontStyle;
+    const FONT: &str = "sans-serif";
+    plotters::style::register_font(FONT, FontStyle::Normal, dejavu::sans::regular())
+        .map_err(|_| "could not load the embedded DejaVu Sans font")?;
+    let root = BitMapBackend::new(path, (1500, 500)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let (title, body) = root.split_vertically(40);
+    title.titled(
+        "Time of impact, ellipse against a disc: median µs per query, this crate vs parry's cast_shapes_nonlinear (hollow: parry wrong in some)",
+        (FONT, 20),
+    )?;
+    let areas = body.split_evenly((1, panels.len()));
+    let (y_lo, y_hi) = panels
+        .iter()
+        .flat_map(|p| p.2.iter().flat_map(|&(_, o, q, _)| [o, q]))
+        .filter(|v| v.is_finite() && *v > 0.0)
+        .fold((f64::INFINITY, 0.0f64), |(lo, hi), v| {
+            (lo.min(v * 1e6), hi.max(v * 1e6))
+        });
+    let blue = RGBColor(31, 119, 180);
+    let orange = RGBColor(255, 127, 14);
+    for (area, (name, xlabel, pts)) in areas.iter().zip(panels) {
+        let (x_lo, x_hi) = pts
+            .iter()
+            .fold((f64::INFINITY, 0.0f64), |(lo, hi), p| (lo.min(p.0), hi.max(p.0)));
+        let mut chart = ChartBuilder::on(area)
+            .caption(*name, (FONT, 18))
+            .margin(12)
+            .x_label_area_size(40)
+            .y_label_area_size(60)
+            .build_cartesian_2d(
+                (x_lo * 0.8..x_hi * 1.25).log_scale(),
+                (y_lo * 0.5..y_hi * 2.0).log_scale(),
+            )?;
+        chart
+            .configure_mesh()
+            .x_desc(*xlabel)
+            .y_desc("µs per query")
+            .label_style((FONT, 13))
+            .axis_desc_style((FONT, 14))
+            .draw()?;
+        let ours: Vec<(f64, f64)> = pts.iter().map(|p| (p.0, p.1 * 1e6)).collect();
+        let parry: Vec<(f64, f64, bool)> = pts
+            .iter()
+            .filter(|p| p.2.is_finite())
+            .map(|p| (p.0, p.2 * 1e6, p.3))
+            .collect();
+        chart
+            .draw_series(LineSeries::new(ours.clone(), blue.stroke_width(2)))?
+            .label("this crate")
+            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], blue.stroke_width(2)));
+        chart.draw_series(ours.iter().map(|&p| Circle::new(p, 4, blue.filled())))?;
+        chart
+            .draw_series(LineSeries::new(
+                parry.iter().map(|p| (p.0, p.1)),
+                orange.stroke_width(2),
+            ))?
+            .label("parry")
+            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], orange.stroke_width(2)));
+        chart.draw_series(parry.iter().map(|&(x, y, wrong)| {
+            let style = if wrong {
+                ShapeStyle::from(&WHITE).filled()
+            } else {
+                orange.filled()
+            };
+            TriangleMarker::new((x, y), 5, style)
+        }))?;
+        chart.draw_series(
+            parry
+                .iter()
+                .filter(|p| p.2)
+                .map(|&(x, y, _)| TriangleMarker::new((x, y), 5, orange.stroke_width(2))),
+        )?;
+        chart
+            .configure_series_labels()
+            .position(SeriesLabelPosition::UpperLeft)
+            .background_style(WHITE.mix(0.8))
+            .border_style(BLACK)
+            .label_font((FONT, 13))
+            .draw()?;
+    }
+    root.present()?;
+    Ok(())
+}
+
+/// One pose of a pair for the stationary queries: shape 2 at `pos12` in shape 1's frame, the
+/// reference signed distance there, and the size of the pair.
+struct PosedPair {
+    case: Case,
+    pos12: Pose,
+    reference: f64,
+    size: f64,
+}
+
+impl PosedPair {
+    fn new(case: Case, pos12: Pose) -> Self {
+        let reference = common::reference_distance(case.s.curve1(), &Pose::IDENTITY, case.s.curve2(), &pos12).distance;
+        let size = case.s.size();
+        Self {
+            case,
+            pos12,
+            reference,
+            size,
+        }
+    }
+}
+
+/// Shape 2's pose in shape 1's frame at the window start.
+fn start_pose(c: &Case) -> Pose {
+    c.s.motion1.position_at_time(c.s.t0).inverse() * c.s.motion2.position_at_time(c.s.t0)
+}
+
+/// The pose at the window start with the centres brought closer until this crate's signed
+/// distance is `depth` (negative: penetrating), by bisection on the translation's scale.
+fn pose_at_depth(c: &Case, depth: f64, d: &SmoothDispatcher) -> Option<Pose> {
+    let p0 = start_pose(c);
+    let at = |k: f64| {
+        let mut p = p0;
+        p.translation *= k;
+        p
+    };
+    let dist = |k: f64| -> Option<f64> { Some(d.signed_distance(&at(k), &*c.g1, &*c.g2)?.ok()?.distance) };
+    let (mut lo, mut hi) = (0.0, 1.0);
+    if !(dist(hi)? > depth && dist(lo)? < depth) {
+        return None;
+    }
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if dist(mid)? > depth {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    Some(at(hi))
+}
+
+/// (median ours µs, median parry µs, ratio of medians, ratio of p90s, per-scenario ratio median).
+fn ratios(ours: &[f64], parry: &[f64]) -> (f64, f64, f64, f64, f64) {
+    let r: Vec<f64> = ours.iter().zip(parry).map(|(o, p)| p / o).collect();
+    (
+        quantile(ours, 0.5),
+        quantile(parry, 0.5),
+        quantile(parry, 0.5) / quantile(ours, 0.5),
+        quantile(parry, 0.9) / quantile(ours, 0.9),
+        quantile(&r, 0.5),
+    )
+}
+
+fn distance_tables() {
+    let d = SmoothDispatcher::default();
+    println!("\n## Stationary distance: speed ratio parry / ours\n");
+    println!(
+        "Per class, the pair at the window start of the {} scenarios (separated: `distance`, parry's GJK) and the same poses with the centres brought to a quarter of their distance where that overlaps (penetrating: `contact`, parry's EPA), both through the shapes' support maps. Errors are against the dense-search reference of `tests/common`, relative to the size.\n",
+        support::BATCH
+    );
+    println!("| class | set | n | ours median µs | parry median µs | ratio of medians | ratio of p90s | per-scenario ratio median | worst \\|error\\|/size ours | parry | parry off by > 1e-6·size |");
+    println!("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
+    for class in ScenarioClass::ALL {
+        let cases: Vec<Case> = (0..support::BATCH as u64).map(|s| Case::new(class, s)).collect();
+        let (mut apart, mut overlapping) = (Vec::new(), Vec::new());
+        for c in cases {
+            let p = start_pose(&c);
+            let mut close = p;
+            close.translation *= 0.25;
+            let c2 = Case::new(class, c.s.seed);
+            apart.push(PosedPair::new(c, p));
+            overlapping.push(PosedPair::new(c2, close));
+        }
+        let apart: Vec<PosedPair> = apart.into_iter().filter(|p| p.reference > 0.0).collect();
+        let overlapping: Vec<PosedPair> = overlapping.into_iter().filter(|p| p.reference < 0.0).collect();
+        for (label, set, penetrating) in [("separated", &apart, false), ("penetrating", &overlapping, true)] {
+            let (mut to, mut tp, mut eo, mut ep, mut off) = (vec![], vec![], 0.0f64, 0.0f64, 0);
+            for p in set.iter() {
+                let (g1, g2) = (&*p.case.g1, &*p.case.g2);
+                let ours = || -> Option<f64> {
+                    if penetrating {
+                        Some(d.contact(&p.pos12, g1, g2, 0.0).ok()??.dist)
+                    } else {
+                        d.distance(&p.pos12, g1, g2).ok().map(|x| x.distance)
+                    }
+                };
+                let parry = || -> Option<f64> {
+                    if penetrating {
+                        Some(DefaultQueryDispatcher.contact(&p.pos12, g1, g2, 0.0).ok()??.dist)
+                    } else {
+                        DefaultQueryDispatcher
+                            .distance(&p.pos12, g1, g2)
+                            .ok()
+                            .map(|x| x.distance)
+                    }
+                };
+                let (a, b) = time_pair(
+                    &mut || {
+                        black_box(ours());
+                    },
+                    &mut || {
+                        black_box(parry());
+                    },
+                );
+                to.push(a);
+                tp.push(b);
+                let err = |x: Option<f64>| x.map_or(f64::INFINITY, |x| (x - p.reference).abs() / p.size);
+                eo = eo.max(err(ours()));
+                let e = err(parry());
+                ep = ep.max(e);
+                off += usize::from(e > 1e-6);
+            }
+            let (mo, mp, rm, r9, rs) = ratios(&to, &tp);
+            println!(
+                "| {} | {label} | {} | {} | {} | {rm:.2} | {r9:.2} | {rs:.2} | {} | {} | {off} |",
+                class.name(),
+                set.len(),
+                us(mo),
+                us(mp),
+                sci(eo),
+                sci(ep)
+            );
+        }
+    }
+}
+
+/// A posed pair with parry's polygonal versions of its shapes.
+type WithPolygons = (PosedPair, Box<dyn Shape>, Box<dyn Shape>);
+
+fn manifold_tables() {
+    use parry2d_f64::query::{ContactManifold, PersistentQueryDispatcher};
+    let d = SmoothDispatcher::default();
+    println!("\n## Contact manifolds: speed ratio parry / ours\n");
+    println!(
+        "Per class, the pair of each of the {} scenarios at its window-start orientation with the centres brought together until the exact signed distance is −1 % of the size (a resting contact), prediction 1 % of the size. Ours: `SmoothDispatcher`'s `contact_manifolds` on the exact shapes. Parry: `DefaultQueryDispatcher`'s polygonal-feature-map manifolds on its polygon approximations (ellipses and `CapsuleEllipse`s as inscribed {}-gons, rounded polygons as parry's `RoundConvexPolygon`, exact). Depth error: the deepest manifold point's distance against the reference signed distance, relative to the size. Each call recomputes the contact points (parry's shortcut for an unchanged pose is defeated by clearing the points; the manifolds and parry's warm-start normal are kept).\n",
+        support::BATCH,
+        support::POLYGON_VERTICES
+    );
+    println!("| class | n | ours median µs | parry median µs | ratio of medians | ratio of p90s | per-scenario ratio median | worst depth error/size ours | parry | median depth error/size parry |");
+    println!("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
+    for class in ScenarioClass::ALL {
+        let set: Vec<WithPolygons> = (0..support::BATCH as u64)
+            .filter_map(|seed| {
+                let c = Case::new(class, seed);
+                let size = c.s.size();
+                let pose = pose_at_depth(&c, -0.01 * size, &d)?;
+                let (a1, a2) = (
+                    support::parry_polygonal(&c.s.shape1),
+                    support::parry_polygonal(&c.s.shape2),
+                );
+                Some((PosedPair::new(c, pose), a1, a2))
+            })
+            .collect();
+        let (mut to, mut tp, mut eo, mut ep, mut eps) = (vec![], vec![], 0.0f64, 0.0f64, vec![]);
+        for (p, a1, a2) in &set {
+            let prediction = 0.01 * p.size;
+            let mut mo: Vec<ContactManifold<(), ()>> = Vec::new();
+            let mut mp: Vec<ContactManifold<(), ()>> = Vec::new();
+            let (mut wo, mut wp) = (None, None);
+            let deepest = |m: &Vec<ContactManifold<(), ()>>| {
+                m.iter()
+                    .flat_map(|m| m.points.iter().map(|c| c.dist))
+                    .fold(f64::INFINITY, f64::min)
+            };
+            let _ = d.contact_manifolds(&p.pos12, &*p.case.g1, &*p.case.g2, prediction, &mut mo, &mut wo);
+            let _ = DefaultQueryDispatcher.contact_manifolds(&p.pos12, &**a1, &**a2, prediction, &mut mp, &mut wp);
+            let e_o = (deepest(&mo) - p.reference).abs() / p.size;
+            let e_p = (deepest(&mp) - p.reference).abs() / p.size;
+            eo = eo.max(e_o);
+            ep = ep.max(e_p);
+            eps.push(e_p);
+            // Each call recomputes: the points are cleared first (otherwise parry's manifold
+            // would be reused as it stands, the pose being unchanged), the manifolds themselves
+            // are kept (no allocation, the previous normal warm-starts parry).
+            let (a, b) = time_pair(
+                &mut || {
+                    mo.iter_mut().for_each(|m| m.clear());
+                    let _ = black_box(d.contact_manifolds(
+                        &p.pos12,
+                        &*p.case.g1,
+                        &*p.case.g2,
+                        prediction,
+                        &mut mo,
+                        &mut wo,
+                    ));
+                },
+                &mut || {
+                    mp.iter_mut().for_each(|m| m.clear());
+                    let _ = black_box(
+                        DefaultQueryDispatcher.contact_manifolds(&p.pos12, &**a1, &**a2, prediction, &mut mp, &mut wp),
+                    );
+                },
+            );
+            to.push(a);
+            tp.push(b);
+        }
+        let (mo, mp, rm, r9, rs) = ratios(&to, &tp);
+        println!(
+            "| {} | {} | {} | {} | {rm:.2} | {r9:.2} | {rs:.2} | {} | {} | {} |",
+            class.name(),
+            set.len(),
+            us(mo),
+            us(mp),
+            sci(eo),
+            sci(ep),
+            sci(quantile(&eps, 0.5))
+        );
+    }
+}
+
+fn sweep_tables() {
+    use parry2d_f64::query::{sweep_time_of_impact, Sweep, SweepToiStatus, ToiProxy};
+    use smooth_ccd2d::RoundedPolygon;
+    let d = SmoothDispatcher::default();
+    println!("\n## parry's Box2D-style `sweep_time_of_impact`\n");
+    println!(
+        "It takes point clouds with a radius (balls, capsules, polygons and their rounded versions), so of this crate's pairs it applies to rounded polygon – disc. The {} `rounded_polygon-ellipse` scenarios with the ellipse replaced by the disc of the same area (this crate: `RoundedPolygon` and parry's `Ball` through `SmoothDispatcher`; the sweep: parry's `RoundConvexPolygon` and `Ball`, `linear_slop` 1e-9 of the size so that it stops within 1e-9·size of touching). The sweep interpolates the rotation between the end poses (nlerp) instead of spinning at constant speed, so its path is this crate's only without spin: the first set has the spins set to 0, the second keeps spins of at most 45° over the window (rapier's regime), where the two paths differ slightly and the reference follows this crate's.\n",
+        support::BATCH
+    );
+    println!("| set | n | ours median µs | sweep median µs | ratio of medians | ratio of p90s | per-scenario ratio median | wrong vs reference: ours / sweep | sweep status Failed | median \\|t − t_ref\\| ours / sweep |");
+    println!("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
+    for (label, spin) in [("no spin", false), ("spin ≤ 45° over the window", true)] {
+        let mut rows = Vec::new();
+        for seed in 0..support::BATCH as u64 {
+            let mut s = common::generate(ScenarioClass::RoundedPolygonEllipse, seed);
+            let (common::TestShape::RoundedPolygon(poly), common::TestShape::Ellipse(e)) = (&s.shape1, &s.shape2)
+            else {
+                continue;
+            };
+            let poly: RoundedPolygon = poly.clone();
+            let r = (e.half_x() * e.half_y()).sqrt();
+            if spin {
+                let turn = (s.motion1.angvel.abs() + s.motion2.angvel.abs()) * (s.t1 - s.t0);
+                if turn > core::f64::consts::FRAC_PI_4 {
+                    continue;
+                }
+            } else {
+                s.motion1.angvel = 0.0;
+                s.motion2.angvel = 0.0;
+            }
+            s.shape2 = common::TestShape::Ball(BallCurve { radius: r });
+            s.target = 0.0;
+            let Some(parry_poly) = poly.to_parry() else { continue };
+            rows.push((s, poly, parry_poly, r));
+        }
+        let refs = common::par_map(&rows, |(s, ..)| s.reference_with_target(0.0));
+        let (mut to, mut tp, mut wo, mut wp, mut failed, mut eo, mut ep) = (vec![], vec![], 0, 0, 0, vec![], vec![]);
+        for ((s, poly, parry_poly, r), rf) in rows.iter().zip(&refs) {
+            let ball = Ball::new(*r);
+            let window = s.t1 - s.t0;
+            let size = s.size();
+            let slop = 1e-9 * size;
+            let ours = || {
+                d.cast_shapes_nonlinear(&s.motion1, poly, &s.motion2, &ball, s.t0, s.t1, true)
+                    .ok()
+                    .flatten()
+                    .map(|h| h.time_of_impact)
+            };
+            let sweep = || {
+                let (pa, pb) = (
+                    ToiProxy::from_shape(parry_poly).unwrap(),
+                    ToiProxy::from_shape(&ball).unwrap(),
+                );
+                let sa = Sweep::from_poses(
+                    &s.motion1.position_at_time(s.t0),
+                    &s.motion1.position_at_time(s.t1),
+                    s.motion1.local_center,
+                );
+                let sb = Sweep::from_poses(
+                    &s.motion2.position_at_time(s.t0),
+                    &s.motion2.position_at_time(s.t1),
+                    s.motion2.local_center,
+                );
+                sweep_time_of_impact(&pa, &sa, &pb, &sb, 1.0, slop)
+            };
+            let (a, b) = time_pair(
+                &mut || {
+                    black_box(ours());
+                },
+                &mut || {
+                    black_box(sweep());
+                },
+            );
+            to.push(a);
+            tp.push(b);
+            let so = sweep();
+            failed += usize::from(so.status == SweepToiStatus::Failed);
+            let sweep_answer = match so.status {
+                SweepToiStatus::Separated => None,
+                _ => Some(s.t0 + so.fraction * window),
+            };
+            let ho = ours();
+            if let (Some(a), Some(b)) = (
+                support::judge(ho, rf, size, window),
+                support::judge(sweep_answer, rf, size, window),
+            ) {
+                wo += usize::from(!a);
+                wp += usize::from(!b);
+            }
+            if let Some(t) = rf.hit_time() {
+                if let Some(x) = ho {
+                    eo.push((x - t).abs() / window);
+                }
+                if let Some(x) = sweep_answer {
+                    ep.push((x - t).abs() / window);
+                }
+            }
+        }
+        let (mo, mp, rm, r9, rs) = ratios(&to, &tp);
+        println!(
+            "| {label} | {} | {} | {} | {rm:.2} | {r9:.2} | {rs:.2} | {wo} / {wp} | {failed} | {} / {} |",
+            rows.len(),
+            us(mo),
+            us(mp),
+            sci(quantile(&eo, 0.5)),
+            sci(quantile(&ep, 0.5))
+        );
+    }
+}
+
+fn pile_table() {
+    use std::time::Instant;
+    use support::pile::{Pile, BODIES};
+    const STEPS: usize = 400;
+    println!("\n## rapier: one step of the pile\n");
+    println!(
+        "`examples/pile.rs`'s {BODIES} bodies (ellipses, rounded polygons, `CapsuleEllipse`s) dropped into a box, {STEPS} steps of 1/60 s from the start (falling, then piling up). Ours: the exact shapes with `SmoothDispatcher`; parry: ellipses and `CapsuleEllipse`s as inscribed {}-gons, rounded polygons as `RoundConvexPolygon`, parry's default dispatcher. The best of 3 runs.\n",
+        support::POLYGON_VERTICES
+    );
+    println!("| narrow phase | mean step ms | max step ms | touching pairs at the end |");
+    println!("|---|---:|---:|---:|");
+    let mut means = [0.0; 2];
+    for (i, (label, exact)) in [
+        ("SmoothDispatcher, exact shapes", true),
+        ("parry, polygon approximations", false),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        let (mut best_mean, mut best_max, mut touching) = (f64::INFINITY, f64::INFINITY, 0);
+        for _ in 0..3 {
+            let mut pile = Pile::new(exact);
+            let (mut total, mut worst) = (0.0f64, 0.0f64);
+            for _ in 0..STEPS {
+                let st = Instant::now();
+                pile.step();
+                let el = st.elapsed().as_secs_f64();
+                total += el;
+                worst = worst.max(el);
+            }
+            if total / (STEPS as f64) < best_mean {
+                best_mean = total / STEPS as f64;
+                best_max = worst;
+                touching = pile.touching_pairs();
+            }
+        }
+        means[i] = best_mean;
+        println!(
+            "| {label} | {:.3} | {:.3} | {touching} |",
+            best_mean * 1e3,
+            best_max * 1e3
+        );
+    }
+    println!("\nRatio parry / ours of the mean step: {:.2}.", means[1] / means[0]);
+}
+
 fn main() {
-    // `cargo bench` passes `--bench`; a filter argument selects "classes" or "growth".
+    // `cargo bench` passes `--bench`; arguments select sections.
     let args: Vec<String> = std::env::args().skip(1).filter(|a| !a.starts_with("--")).collect();
     let want = |name: &str| args.is_empty() || args.iter().any(|a| name.contains(a.as_str()));
     if want("classes") {
         class_tables();
     }
+    if want("distance") {
+        distance_tables();
+    }
+    if want("manifolds") {
+        manifold_tables();
+    }
+    if want("sweep") {
+        sweep_tables();
+    }
     if want("growth") {
         growth_tables();
+    }
+    if want("pile") {
+        pile_table();
     }
     // A parry cast that never returned may still be spinning on its thread.
     use std::io::Write;

@@ -1,11 +1,21 @@
-//! Criterion benchmarks: this crate's `SmoothDispatcher::cast_shapes_nonlinear` against parry's
-//! `DefaultQueryDispatcher::cast_shapes_nonlinear` on the same shapes, one group per scenario
-//! class of `tests/common/scenarios.rs`, hits and misses separately (a fixed batch of
-//! `support::BATCH` scenarios per class split by this crate's outcome; one iteration runs the
-//! whole batch). A last group compares the stationary distance on ellipse pairs (with this
-//! crate's curve API, which also computes the penetration depth, as a third function).
+//! Criterion benchmarks, this crate against parry as two functions of one group:
 //!
-//! Run with `cargo bench --bench toi`.
+//! * `toi/<class>`: `SmoothDispatcher::cast_shapes_nonlinear` against parry's
+//!   `DefaultQueryDispatcher::cast_shapes_nonlinear` on the same shapes, one group per scenario
+//!   class of `tests/common/scenarios.rs`, hits and misses separately (a fixed batch of
+//!   `support::BATCH` scenarios per class split by this crate's outcome; one iteration runs the
+//!   whole batch);
+//! * `distance/<class>`: the stationary distance (`distance` when separated, `contact` when
+//!   penetrating) against parry's GJK and EPA through the shapes' support maps;
+//! * `manifolds/<class>`: `contact_manifolds` on the exact shapes against parry's
+//!   polygonal-feature-map manifolds on its polygon approximations, at resting contacts;
+//! * `sweep/rounded_polygon-disc`: against parry's Box2D-style `sweep_time_of_impact`, without
+//!   spin (where both follow the same path);
+//! * `pile/step`: one rapier step of `examples/pile.rs`'s pile, exact shapes with
+//!   `SmoothDispatcher` against parry's polygon approximations.
+//!
+//! Run with `cargo bench --bench toi` (add a filter such as `-- distance` for one kind). The
+//! ratios with the accuracy beside them are printed by `cargo bench --bench ratios`.
 
 #[path = "../tests/common/mod.rs"]
 #[allow(unused_imports)]
@@ -15,20 +25,27 @@ mod support;
 use common::{generate, ScenarioClass, TestShape};
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
 use parry2d_f64::math::Pose;
-use parry2d_f64::query::{DefaultQueryDispatcher, QueryDispatcher};
-use parry2d_f64::shape::Shape;
-use smooth_ccd2d::{stationary_distance, DistanceOptions, Ellipse, SmoothDispatcher};
+use parry2d_f64::query::{
+    sweep_time_of_impact, ContactManifold, DefaultQueryDispatcher, PersistentQueryDispatcher, QueryDispatcher, Sweep,
+    ToiProxy,
+};
+use parry2d_f64::shape::{Ball, Shape};
+use smooth_ccd2d::{BallCurve, RoundedPolygon, SmoothDispatcher};
 use std::time::Duration;
 use support::{split_batch, Case, BATCH};
+
+fn short(g: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>) {
+    g.sample_size(10)
+        .warm_up_time(Duration::from_millis(300))
+        .measurement_time(Duration::from_secs(1));
+}
 
 fn bench_toi(c: &mut Criterion) {
     let d = SmoothDispatcher::default();
     for class in ScenarioClass::ALL {
         let (hits, misses) = split_batch(class);
         let mut g = c.benchmark_group(format!("toi/{}", class.name()));
-        g.sample_size(10)
-            .warm_up_time(Duration::from_millis(500))
-            .measurement_time(Duration::from_secs(2));
+        short(&mut g);
         for (label, batch) in [("hits", &hits), ("misses", &misses)] {
             if batch.is_empty() {
                 continue;
@@ -53,69 +70,207 @@ fn bench_toi(c: &mut Criterion) {
     }
 }
 
-/// Ellipse pairs of the `EllipseEllipse` batch: the pose of shape 2 in shape 1's frame at the
-/// window start (separated), and the same pose with the centres brought to a quarter of their
-/// distance, kept where that overlaps (penetrating).
-type PosePair = (Pose, Box<dyn Shape>, Box<dyn Shape>);
+/// The pose of shape 2 in shape 1's frame at the window start.
+fn start_pose(c: &Case) -> Pose {
+    c.s.motion1.position_at_time(c.s.t0).inverse() * c.s.motion2.position_at_time(c.s.t0)
+}
 
-fn ellipse_pairs() -> (Vec<PosePair>, Vec<PosePair>) {
-    let d = SmoothDispatcher::default();
-    let (mut apart, mut overlapping) = (Vec::new(), Vec::new());
-    for seed in 0..BATCH as u64 {
-        let s = generate(ScenarioClass::EllipseEllipse, seed);
-        let (TestShape::Ellipse(e1), TestShape::Ellipse(e2)) = (&s.shape1, &s.shape2) else {
-            continue;
-        };
-        let pos12 = s.motion1.position_at_time(s.t0).inverse() * s.motion2.position_at_time(s.t0);
-        apart.push((pos12, Box::new(*e1) as Box<dyn Shape>, Box::new(*e2) as Box<dyn Shape>));
-        let mut close = pos12;
-        close.translation *= 0.25;
-        if let Some(Ok(r)) = d.signed_distance(&close, e1, e2) {
-            if r.distance < 0.0 {
-                overlapping.push((close, Box::new(*e1) as Box<dyn Shape>, Box::new(*e2) as Box<dyn Shape>));
-            }
+/// The window-start pose with the centres brought closer until this crate's signed distance is
+/// `depth` (bisection on the translation's scale).
+fn pose_at_depth(c: &Case, depth: f64, d: &SmoothDispatcher) -> Option<Pose> {
+    let p0 = start_pose(c);
+    let at = |k: f64| {
+        let mut p = p0;
+        p.translation *= k;
+        p
+    };
+    let dist = |k: f64| -> Option<f64> { Some(d.signed_distance(&at(k), &*c.g1, &*c.g2)?.ok()?.distance) };
+    let (mut lo, mut hi) = (0.0, 1.0);
+    if !(dist(hi)? > depth && dist(lo)? < depth) {
+        return None;
+    }
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if dist(mid)? > depth {
+            hi = mid;
+        } else {
+            lo = mid;
         }
     }
-    (apart, overlapping)
+    Some(at(hi))
 }
 
 fn bench_distance(c: &mut Criterion) {
     let d = SmoothDispatcher::default();
-    let (apart, overlapping) = ellipse_pairs();
-    let mut g = c.benchmark_group("distance/ellipse-ellipse");
-    g.sample_size(20)
-        .warm_up_time(Duration::from_millis(500))
-        .measurement_time(Duration::from_secs(2));
-    for (label, batch) in [("separated", &apart), ("penetrating", &overlapping)] {
-        if batch.is_empty() {
-            continue;
-        }
-        let param = format!("{label} ({})", batch.len());
-        g.bench_with_input(BenchmarkId::new("ours", &param), batch, |b, batch: &Vec<PosePair>| {
-            b.iter(|| {
-                for (p, g1, g2) in batch {
-                    black_box(d.distance(p, &**g1, &**g2).ok());
-                }
-            })
-        });
-        g.bench_with_input(BenchmarkId::new("parry", &param), batch, |b, batch: &Vec<PosePair>| {
-            b.iter(|| {
-                for (p, g1, g2) in batch {
-                    black_box(DefaultQueryDispatcher.distance(p, &**g1, &**g2).ok());
-                }
-            })
-        });
-        // The signed distance through the curve API (no dispatch; penetration depth included).
-        let curves: Vec<(Pose, Ellipse, Ellipse)> = batch
+    for class in ScenarioClass::ALL {
+        let cases: Vec<Case> = (0..BATCH as u64).map(|s| Case::new(class, s)).collect();
+        let apart: Vec<(&Case, Pose)> = cases.iter().map(|c| (c, start_pose(c))).collect();
+        let overlapping: Vec<(&Case, Pose)> = cases
             .iter()
-            .filter_map(|(p, g1, g2)| Some((*p, *g1.as_shape::<Ellipse>()?, *g2.as_shape::<Ellipse>()?)))
+            .filter_map(|c| {
+                let mut p = start_pose(c);
+                p.translation *= 0.25;
+                let r = d.signed_distance(&p, &*c.g1, &*c.g2)?.ok()?;
+                (r.distance < 0.0).then_some((c, p))
+            })
             .collect();
-        let opts = DistanceOptions::default();
-        g.bench_with_input(BenchmarkId::new("ours-curve-api", &param), &curves, |b, curves| {
+        let mut g = c.benchmark_group(format!("distance/{}", class.name()));
+        short(&mut g);
+        for (label, set, penetrating) in [("separated", &apart, false), ("penetrating", &overlapping, true)] {
+            let param = format!("{label} ({})", set.len());
+            g.bench_function(BenchmarkId::new("ours", &param), |b| {
+                b.iter(|| {
+                    for (c, p) in set {
+                        if penetrating {
+                            black_box(d.contact(p, &*c.g1, &*c.g2, 0.0).ok());
+                        } else {
+                            black_box(d.distance(p, &*c.g1, &*c.g2).ok());
+                        }
+                    }
+                })
+            });
+            g.bench_function(BenchmarkId::new("parry", &param), |b| {
+                b.iter(|| {
+                    for (c, p) in set {
+                        if penetrating {
+                            black_box(DefaultQueryDispatcher.contact(p, &*c.g1, &*c.g2, 0.0).ok());
+                        } else {
+                            black_box(DefaultQueryDispatcher.distance(p, &*c.g1, &*c.g2).ok());
+                        }
+                    }
+                })
+            });
+        }
+        g.finish();
+    }
+}
+
+type Manifolds = Vec<ContactManifold<(), ()>>;
+/// A resting contact: the case, its pose, parry's polygonal shapes and the prediction.
+type Resting = (Case, Pose, Box<dyn Shape>, Box<dyn Shape>, f64);
+
+fn bench_manifolds(c: &mut Criterion) {
+    let d = SmoothDispatcher::default();
+    for class in ScenarioClass::ALL {
+        // Resting contacts: signed distance −1 % of the size, prediction 1 % of the size.
+        let set: Vec<Resting> = (0..BATCH as u64)
+            .filter_map(|seed| {
+                let c = Case::new(class, seed);
+                let size = c.s.size();
+                let p = pose_at_depth(&c, -0.01 * size, &d)?;
+                let (a1, a2) = (
+                    support::parry_polygonal(&c.s.shape1),
+                    support::parry_polygonal(&c.s.shape2),
+                );
+                Some((c, p, a1, a2, 0.01 * size))
+            })
+            .collect();
+        let mut g = c.benchmark_group(format!("manifolds/{}", class.name()));
+        short(&mut g);
+        let param = format!("resting contacts ({})", set.len());
+        // The manifolds are kept between iterations (no allocation) and their points cleared
+        // before each call, so that every call recomputes them.
+        let mut mo: Vec<(Manifolds, _)> = set.iter().map(|_| (Vec::new(), None)).collect();
+        g.bench_function(BenchmarkId::new("ours", &param), |b| {
             b.iter(|| {
-                for (p, e1, e2) in curves {
-                    black_box(stationary_distance(e1, e2, p, &opts).ok());
+                for ((c, p, _, _, pred), (m, w)) in set.iter().zip(mo.iter_mut()) {
+                    m.iter_mut().for_each(|m| m.clear());
+                    let _ = black_box(d.contact_manifolds(p, &*c.g1, &*c.g2, *pred, m, w));
                 }
+            })
+        });
+        let mut mp: Vec<(Manifolds, _)> = set.iter().map(|_| (Vec::new(), None)).collect();
+        g.bench_function(BenchmarkId::new("parry-polygons", &param), |b| {
+            b.iter(|| {
+                for ((_, p, a1, a2, pred), (m, w)) in set.iter().zip(mp.iter_mut()) {
+                    m.iter_mut().for_each(|m| m.clear());
+                    let _ = black_box(DefaultQueryDispatcher.contact_manifolds(p, &**a1, &**a2, *pred, m, w));
+                }
+            })
+        });
+        g.finish();
+    }
+}
+
+fn bench_sweep(c: &mut Criterion) {
+    let d = SmoothDispatcher::default();
+    // The rounded_polygon-ellipse scenarios with the ellipse replaced by the disc of the same
+    // area and the spins set to 0 (the sweep interpolates rotations differently).
+    let set: Vec<_> = (0..BATCH as u64)
+        .filter_map(|seed| {
+            let mut s = generate(ScenarioClass::RoundedPolygonEllipse, seed);
+            let (TestShape::RoundedPolygon(poly), TestShape::Ellipse(e)) = (&s.shape1, &s.shape2) else {
+                return None;
+            };
+            let poly: RoundedPolygon = poly.clone();
+            let r = (e.half_x() * e.half_y()).sqrt();
+            s.motion1.angvel = 0.0;
+            s.motion2.angvel = 0.0;
+            s.shape2 = TestShape::Ball(BallCurve { radius: r });
+            let parry_poly = poly.to_parry()?;
+            let sa = Sweep::from_poses(
+                &s.motion1.position_at_time(s.t0),
+                &s.motion1.position_at_time(s.t1),
+                s.motion1.local_center,
+            );
+            let sb = Sweep::from_poses(
+                &s.motion2.position_at_time(s.t0),
+                &s.motion2.position_at_time(s.t1),
+                s.motion2.local_center,
+            );
+            let slop = 1e-9 * s.size();
+            Some((s, poly, parry_poly, Ball::new(r), sa, sb, slop))
+        })
+        .collect();
+    let mut g = c.benchmark_group("sweep/rounded_polygon-disc");
+    short(&mut g);
+    let param = format!("no spin ({})", set.len());
+    g.bench_function(BenchmarkId::new("ours", &param), |b| {
+        b.iter(|| {
+            for (s, poly, _, ball, ..) in &set {
+                black_box(
+                    d.cast_shapes_nonlinear(&s.motion1, poly, &s.motion2, ball, s.t0, s.t1, true)
+                        .ok(),
+                );
+            }
+        })
+    });
+    g.bench_function(BenchmarkId::new("parry-sweep", &param), |b| {
+        b.iter(|| {
+            for (_, _, parry_poly, ball, sa, sb, slop) in &set {
+                let (pa, pb) = (
+                    ToiProxy::from_shape(parry_poly).unwrap(),
+                    ToiProxy::from_shape(ball).unwrap(),
+                );
+                black_box(sweep_time_of_impact(&pa, sa, &pb, sb, 1.0, *slop));
+            }
+        })
+    });
+    g.finish();
+}
+
+fn bench_pile(c: &mut Criterion) {
+    let mut g = c.benchmark_group("pile/step");
+    g.sample_size(10)
+        .warm_up_time(Duration::from_millis(500))
+        .measurement_time(Duration::from_secs(3));
+    for (name, exact) in [("ours", true), ("parry-polygons", false)] {
+        // Steps of the first `CYCLE` (the bodies fall, then pile up), restarted every `CYCLE`
+        // steps so that no run measures a pile asleep; the rebuilds are not timed.
+        const CYCLE: u64 = 400;
+        g.bench_function(BenchmarkId::new(name, support::pile::BODIES), |b| {
+            b.iter_custom(|iters| {
+                let mut total = Duration::ZERO;
+                let mut pile = support::pile::Pile::new(exact);
+                for i in 0..iters {
+                    if i > 0 && i % CYCLE == 0 {
+                        pile = support::pile::Pile::new(exact);
+                    }
+                    let start = std::time::Instant::now();
+                    pile.step();
+                    total += start.elapsed();
+                }
+                total
             })
         });
     }
@@ -125,6 +280,6 @@ fn bench_distance(c: &mut Criterion) {
 criterion_group! {
     name = benches;
     config = Criterion::default();
-    targets = bench_toi, bench_distance
+    targets = bench_toi, bench_distance, bench_manifolds, bench_sweep, bench_pile
 }
 criterion_main!(benches);

@@ -211,6 +211,7 @@ fn main() {
         SPEEDS, SPINS
     );
     println!("depth = how far the shape's deepest point is past the wall face at the first contact step (< 0: short)");
+    println!("max depth run = the largest depth over the whole shot (after the impact too: spinning against the wall)");
     println!(
         "{:<24} {:<18} {:>5} {:>10} {:>12} {:>12} {:>14} {:>8}",
         "shape", "method", "shots", "tunnelled", "worst depth", "most short", "max depth run", "time s"

@@ -45,7 +45,13 @@ impl ConvexCurve for BallCurve {
     fn max_radius_of_curvature(&self) -> f64 {
         self.radius
     }
+    fn min_radius_of_curvature(&self) -> f64 {
+        self.radius
+    }
     fn support_dd_bound(&self) -> f64 {
+        0.0
+    }
+    fn support_dd_bound_near(&self, _m: Vector, _half_angle: f64) -> f64 {
         0.0
     }
     fn support_point(&self, n: Vector) -> Vector {

@@ -53,9 +53,15 @@ impl CapsuleEllipse {
         }
     }
 
-    /// Shape1 with parameters r1, r2, r3, or why not (each must be finite and positive).
+    /// Shape1 with parameters r1, r2, r3, or why not (each must be finite, positive and within
+    /// [[`crate::error::MIN_LENGTH`], [`crate::error::MAX_LENGTH`]], and r1 ≥ 1e-6·r2: on
+    /// thinner arcs r1² − r2²cos²φ of eq. 9 is lost to rounding at the arcs' ends and the
+    /// boundary evaluates to NaN).
     pub fn try_new(r1: f64, r2: f64, r3: f64) -> Result<Self, ShapeError> {
         let (r1, r2, r3) = (positive("r1", r1)?, positive("r2", r2)?, positive("r3", r3)?);
+        if r1 < 1e-6 * r2 {
+            return Err(ShapeError::Invalid("parameter `r1` must be at least 1e-6·r2"));
+        }
         let a = (r2 / r1).atan();
         Ok(Self {
             r1,
@@ -93,21 +99,38 @@ impl ConvexCurve for CapsuleEllipse {
         let phi = wrap_phi(phi);
         let x = Dual2::var(phi);
         let (r1, r2, r3) = (self.r1, self.r2, self.r3);
-        let (px, py, nx, ny) = match self.piece_index(phi) {
+        let mut piece = self.piece_index(phi);
+        if piece == 1 {
+            // The breakpoint arctan(r2/r1) is rounded, and eq. 9 just below the true one gives
+            // the circle's point behind the segment (inside the shape, normal turned the wrong
+            // way; with r1 ≪ r2 by up to √ε·r2/r1, so that distanceFwd overestimates the gap):
+            // the arc starts where |sin φ|·r1 ≥ r2·cos φ, the segment before.
+            let (s, c) = phi.sin_cos();
+            let on_arc = s.abs() * r1 >= r2 * c;
+            if !on_arc {
+                piece = 2;
+            }
+        }
+        let (px, py, nx, ny) = match piece {
             0 => {
-                let (c, s) = (x.cos(), x.sin());
+                let (s, c) = x.sin_cos();
                 let (a, b) = (r3, r1 + r2);
                 let (gx, gy) = (c.scale(1.0 / a), s.scale(1.0 / b));
                 let inv = (gx * gx + gy * gy).sqrt().recip();
                 (c.scale(a), s.scale(b), gx * inv, gy * inv)
             }
             1 => {
-                let (c, s) = (x.cos(), x.sin());
+                let (s, c) = x.sin_cos();
                 let sg = if phi >= 0.0 { 1.0 } else { -1.0 };
-                let d = s.scale(r2 * sg) + (Dual2::cst(r1 * r1) - (c * c).scale(r2 * r2)).sqrt();
+                // Eq. 9 with r1² − r2²cos²φ factored as (r1 − r2 cos φ)(r1 + r2 cos φ): at the
+                // arcs' ends r2 cos φ ≈ r1, and the unfactored difference of squares loses
+                // √ε·r2 in the point and √ε·r2/r1 in the normal (2e-3 rad for r1 = 1e-5·r2).
+                let q = ((Dual2::cst(r1) - c.scale(r2)) * (Dual2::cst(r1) + c.scale(r2))).sqrt();
+                let d = s.scale(r2 * sg) + q;
                 let (px, py) = (d * c, d * s);
                 let nx = px.scale(1.0 / r1);
-                let ny = (py - Dual2::cst(sg * r2)).scale(1.0 / r1);
+                // y − sg·r2 = q sin φ − sg·r2 cos²φ, without the cancellation of d sin φ − sg·r2.
+                let ny = (q * s - (c * c).scale(sg * r2)).scale(1.0 / r1);
                 (px, py, nx, ny)
             }
             _ => (Dual2::cst(r1), x.tan().scale(r1), Dual2::cst(1.0), Dual2::cst(0.0)),
@@ -129,6 +152,13 @@ impl ConvexCurve for CapsuleEllipse {
     fn bounding_radius(&self) -> f64 {
         // Arcs and segment lie within r1 + r2 of the origin; the half-ellipse within max(r3, b).
         (self.r1 + self.r2).max(self.r3)
+    }
+
+    fn min_radius_of_curvature(&self) -> f64 {
+        // Arcs of radius r1, a flat segment, and half of the ellipse with semi-axes r3, r1 + r2
+        // (both of its vertices: radii small²/big and big²/small).
+        let (a, b) = (self.r3, self.r1 + self.r2);
+        self.r1.min(a.min(b).powi(2) / a.max(b))
     }
 
     fn phi_range_of_normal(&self, n: Vector) -> (f64, f64) {

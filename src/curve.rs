@@ -118,12 +118,27 @@ pub trait ConvexCurve: Send + Sync + Debug + 'static {
         f64::INFINITY
     }
 
+    /// A lower bound on the radius of curvature over the whole curve (0 for a curve with sharp
+    /// corners; a flat piece counts as infinite). The stationary distance uses it to certify a
+    /// shallow penetration depth without its global search. The default, 0, is always valid.
+    fn min_radius_of_curvature(&self) -> f64 {
+        0.0
+    }
+
     /// An upper bound on |h''(ψ)| = |ρ(ψ) − h(ψ)| over all directions, with h the support
     /// function about the local origin (strictly convex curves only). The time of impact's
     /// step guard multiplies it by the squared relative spin. The default,
     /// `max_radius_of_curvature() + bounding_radius()`, is always valid.
     fn support_dd_bound(&self) -> f64 {
         self.max_radius_of_curvature() + self.bounding_radius()
+    }
+
+    /// An upper bound on |h''(ψ)| over the directions within `half_angle` of the unit vector `m`
+    /// (strictly convex curves only). The time of impact's step guard uses it over the
+    /// directions one step sweeps. The default is [`ConvexCurve::support_dd_bound`].
+    fn support_dd_bound_near(&self, m: Vector, half_angle: f64) -> f64 {
+        let _ = (m, half_angle);
+        self.support_dd_bound()
     }
 
     /// The support point in direction `n` (any unit vector): the boundary point furthest along n.

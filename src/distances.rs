@@ -114,6 +114,8 @@ pub struct RelativeMotion {
     dv: Vector,
     center1: Vector,
     center2: Vector,
+    /// (sin α₂, cos α₂) at t = 0, used when object2 does not spin.
+    sc2_0: (f64, f64),
 }
 
 impl RelativeMotion {
@@ -130,6 +132,7 @@ impl RelativeMotion {
             dv: m1.linvel - m2.linvel,
             center1: m1.local_center,
             center2: m2.local_center,
+            sc2_0: a2.sin_cos(),
         }
     }
 
@@ -162,7 +165,11 @@ impl RelativeMotion {
     #[inline]
     pub fn frame(&self, t: f64) -> PairFrame {
         let (sb, cb) = (self.beta0 + self.omega * t).sin_cos();
-        let (s2, c2) = (self.alpha2_0 + self.omega2 * t).sin_cos();
+        let (s2, c2) = if self.omega2 == 0.0 {
+            self.sc2_0
+        } else {
+            (self.alpha2_0 + self.omega2 * t).sin_cos()
+        };
         // R(−α₂) v = (c v_x + s v_y, −s v_x + c v_y)
         let rinv = |v: Vector| Vector::new(c2 * v.x + s2 * v.y, -s2 * v.x + c2 * v.y);
         let big_q = rinv(self.dc0 + self.dv * t);

@@ -73,7 +73,8 @@ impl Ellipse {
         }
     }
 
-    /// An ellipse with semi-axes `half_x`, `half_y`, or why not.
+    /// An ellipse with semi-axes `half_x`, `half_y`, or why not (each must be finite, positive
+    /// and within [[`crate::error::MIN_LENGTH`], [`crate::error::MAX_LENGTH`]]).
     pub fn try_new(half_x: f64, half_y: f64) -> Result<Self, ShapeError> {
         Ok(Self {
             half_x: positive("half_x", half_x)?,
@@ -119,7 +120,7 @@ impl ConvexCurve for Ellipse {
     fn eval(&self, phi: f64) -> CurvePoint {
         let (a2, b2) = (self.half_x * self.half_x, self.half_y * self.half_y);
         let x = Dual2::var(phi);
-        let (c, s) = (x.cos(), x.sin());
+        let (s, c) = x.sin_cos();
         let h = (c * c).scale(a2) + (s * s).scale(b2);
         let inv_h = h.sqrt().recip();
         let px = (c * inv_h).scale(a2);
@@ -167,10 +168,40 @@ impl ConvexCurve for Ellipse {
         (a * a / b).max(b * b / a)
     }
 
+    fn min_radius_of_curvature(&self) -> f64 {
+        let (a, b) = (self.half_x, self.half_y);
+        (a * a / b).min(b * b / a)
+    }
+
     fn support_dd_bound(&self) -> f64 {
         // h ∈ [small, big], ρ ∈ [small²/big, big²/small]: |ρ − h| ≤ big²/small − small.
         let (small, big) = (self.half_x.min(self.half_y), self.half_x.max(self.half_y));
         big * big / small - small
+    }
+
+    fn support_dd_bound_near(&self, m: Vector, half_angle: f64) -> f64 {
+        // h'' = ρ − h = a²b²/h³ − h decreases with h, so its extremes over an arc of directions
+        // are at the arc's extremes of h² = b² + (a² − b²)·cos²ψ, i.e. of cos²ψ.
+        let w = half_angle * (1.0 + 1e-9) + 1e-12;
+        if w.is_nan() || w >= 0.99 {
+            return self.support_dd_bound();
+        }
+        // The ends of a slightly wider arc, of half-angle asin(w) ≥ w (no trigonometry); it is
+        // shorter than π, so it contains a direction with cos ψ = 0 (sin ψ = 0) exactly when the
+        // ends' x (y) components differ in sign.
+        let m = m.normalize_or(Vector::X);
+        let (sw, cw) = (w, (1.0 - w * w).sqrt());
+        let e1 = Vector::new(m.x * cw + m.y * sw, m.y * cw - m.x * sw);
+        let e2 = Vector::new(m.x * cw - m.y * sw, m.y * cw + m.x * sw);
+        let (c1, c2) = (e1.x * e1.x, e2.x * e2.x);
+        let c_max = if e1.y * e2.y <= 0.0 { 1.0 } else { c1.max(c2).min(1.0) };
+        let c_min = if e1.x * e2.x <= 0.0 { 0.0 } else { c1.min(c2) };
+        let (a2, b2) = (self.half_x * self.half_x, self.half_y * self.half_y);
+        let f = |c2: f64| {
+            let h = (b2 + (a2 - b2) * c2).sqrt();
+            (a2 * b2 / (h * h * h) - h).abs()
+        };
+        f(c_min).max(f(c_max))
     }
 
     fn support_point(&self, n: Vector) -> Vector {

@@ -37,7 +37,7 @@ pub fn halfspace_distance(
     pos12: &Pose,
     curve_first: bool,
 ) -> Result<StationaryDistance, QueryError> {
-    if !pos12.is_finite() {
+    if !(pos12.is_finite() && hs.normal.is_finite()) {
         return Err(QueryError::NonFinite);
     }
     // Work in the curve's frame: pos_hc = pose of the half-space in the curve's frame.
@@ -68,7 +68,7 @@ pub fn halfspace_distance(
         newton_iterations: 0,
         evaluations: 1,
     };
-    Ok(if curve_first {
+    crate::error::finite_distance(Ok(if curve_first {
         base
     } else {
         StationaryDistance {
@@ -78,7 +78,7 @@ pub fn halfspace_distance(
             normal2: -n,
             ..base
         }
-    })
+    }))
 }
 
 struct Sample {
@@ -153,10 +153,22 @@ pub fn time_of_impact_halfspace(
     t1: f64,
     opts: &ToiOptions,
 ) -> Result<TimeOfImpact, QueryError> {
+    crate::error::finite_toi(toi_halfspace(curve, mc, hs, mh, t0, t1, opts))
+}
+
+fn toi_halfspace(
+    curve: &dyn ConvexCurve,
+    mc: &NonlinearRigidMotion,
+    hs: &HalfSpace,
+    mh: &NonlinearRigidMotion,
+    t0: f64,
+    t1: f64,
+    opts: &ToiOptions,
+) -> Result<TimeOfImpact, QueryError> {
     let finite = |m: &NonlinearRigidMotion| {
         m.start.is_finite() && m.local_center.is_finite() && m.linvel.is_finite() && m.angvel.is_finite()
     };
-    if !(finite(mc) && finite(mh) && t0.is_finite() && t1.is_finite() && hs.normal.is_finite()) {
+    if !(finite(mc) && finite(mh) && t0.is_finite() && t1.is_finite() && hs.normal.is_finite() && opts.is_valid()) {
         return Err(QueryError::NonFinite);
     }
     if t1 < t0 {
@@ -194,7 +206,7 @@ pub fn time_of_impact_halfspace(
     };
     let mut s = sample(curve, mc, hs, mh, t0);
     cost.evaluations += 1;
-    if !s.dist.is_finite() {
+    if !(s.dist.is_finite() && s.dg.is_finite() && s.v_min.is_finite()) {
         return Err(QueryError::Degenerate);
     }
     if s.dist <= delta + tol {
@@ -210,6 +222,9 @@ pub fn time_of_impact_halfspace(
             s = sample(curve, mc, hs, mh, (s.t + h).min(t1));
             cost.predictor_steps += 1;
             cost.evaluations += 1;
+            if !(s.dist.is_finite() && s.dg.is_finite() && s.v_min.is_finite()) {
+                return Err(QueryError::Degenerate);
+            }
             if s.dist <= delta + tol && s.dg <= 0.0 {
                 return Ok(finish(&s, ToiStatus::Hit, cost));
             }
@@ -257,7 +272,7 @@ pub fn time_of_impact_halfspace(
         s = sample(curve, mc, hs, mh, tn);
         cost.predictor_steps += 1;
         cost.evaluations += 1;
-        if !s.dist.is_finite() {
+        if !(s.dist.is_finite() && s.dg.is_finite() && s.v_min.is_finite()) {
             return Err(QueryError::Degenerate);
         }
     }

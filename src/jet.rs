@@ -59,6 +59,12 @@ impl Dual2 {
         let (s, c) = self.v.sin_cos();
         self.chain(c, -s, -c)
     }
+    /// Sine and cosine together (one `sin_cos` of the value).
+    #[inline]
+    pub fn sin_cos(self) -> (Self, Self) {
+        let (s, c) = self.v.sin_cos();
+        (self.chain(s, c, -s), self.chain(c, -s, -c))
+    }
     /// Tangent.
     #[inline]
     pub fn tan(self) -> Self {

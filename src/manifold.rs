@@ -12,7 +12,10 @@
 //!   the flat piece (the end nearer the plane replaced by the support point once the support
 //!   point has left the piece), each with its exact distance, so that a body can rest on a flat
 //!   side. Pairs where neither side is strictly convex (e.g. a rounded polygon on a box) are
-//!   parry's, which clips the shapes' polygonal features and returns up to two points.
+//!   parry's, which clips the shapes' polygonal features and returns up to two points; where
+//!   parry's manifold comes back empty for shapes its distance puts within the prediction
+//!   (nearly touching parallel faces, where GJK/EPA give up), it is computed on the shapes pushed
+//!   10⁻⁸ of their size into each other and its distances measured at the true pose.
 //! * **Composite shapes** (compound, polyline, trimesh, heightfield, voxels) on either side:
 //!   parry's composite helpers, called with *this* dispatcher so that every sub-pair comes back
 //!   here ([`PersistentQueryDispatcher::contact_manifold_convex_convex`]). Normal constraints
@@ -36,7 +39,7 @@
 //! over small facets).
 
 use crate::curve::ConvexCurve;
-use crate::dispatcher::{curve_of, own_curve, CurveOf};
+use crate::dispatcher::{own_curve, pair_size, parry_within, pushed_together, route, TOUCH_PUSH};
 use crate::math::{Pose, Real, Vector};
 use crate::parry_shape::{flat_pieces, FLAT_FEATURE_MAX_ANGLE};
 use crate::stationary::StationaryDistance;
@@ -144,6 +147,7 @@ fn manifold_from_distance<M, C: Default + Copy>(
     pos12: &Pose,
     g1: &dyn Shape,
     g2: &dyn Shape,
+    curves: (Option<&dyn ConvexCurve>, Option<&dyn ConvexCurve>),
     sd: &StationaryDistance,
     normal_constraints1: Option<&dyn NormalConstraints>,
     normal_constraints2: Option<&dyn NormalConstraints>,
@@ -168,10 +172,9 @@ fn manifold_from_distance<M, C: Default + Copy>(
     let hs2 = g2.as_shape::<HalfSpace>();
     if hs1.is_some() != hs2.is_some() && !constrained {
         let curve_first = hs2.is_some();
-        let curve_shape = if curve_first { g1 } else { g2 };
-        if let Some(curve) = curve_of(curve_shape) {
+        if let Some(curve) = if curve_first { curves.0 } else { curves.1 } {
             let (nc, support) = if curve_first { (n1, sd.point1) } else { (n2, sd.point2) };
-            if let Some(points) = flat_on_halfspace(curve.get(), nc, support) {
+            if let Some(points) = flat_on_halfspace(curve, nc, support) {
                 // Pose of the half-space in the curve's frame; the plane's normal is −nc.
                 let pos_ch = if curve_first { *pos12 } else { pos12.inverse() };
                 let m = -nc;
@@ -197,9 +200,8 @@ fn manifold_from_distance<M, C: Default + Copy>(
         }
     }
 
-    let c1 = curve_of(g1);
-    let c2 = curve_of(g2);
-    let strict = |c: &Option<CurveOf>| c.as_ref().is_some_and(|c| c.get().is_strictly_convex());
+    let (c1, c2) = curves;
+    let strict = |c: Option<&dyn ConvexCurve>| c.is_some_and(|c| c.is_strictly_convex());
     // The witness on a flat piece is not unique (any point of the piece maximises the
     // distance): the contact point is the one facing the strictly convex side's witness, which
     // is unique. p2 − p1 = dist · n1 at the solution, so this only moves a flat-piece witness.
@@ -209,19 +211,19 @@ fn manifold_from_distance<M, C: Default + Copy>(
         // The normal constraints moved the normal: the separation along the new one.
         dist = (pos12.transform_point(p2) - p1).dot(n1);
     }
-    if strict(&c2) || g1.as_shape::<HalfSpace>().is_some() {
+    if strict(c2) || g1.as_shape::<HalfSpace>().is_some() {
         p1 = pos12.transform_point(p2) - n1 * dist;
-    } else if strict(&c1) || g2.as_shape::<HalfSpace>().is_some() {
+    } else if strict(c1) || g2.as_shape::<HalfSpace>().is_some() {
         p2 = pos12.inverse_transform_point(p1 + n1 * dist);
     }
     if dist <= prediction && dist.is_finite() && p1.is_finite() && p2.is_finite() {
-        let fid = |g: &dyn Shape, c: &Option<CurveOf>, n: Vector| match c {
-            Some(c) => curve_fid(c.get(), n),
+        let fid = |g: &dyn Shape, c: Option<&dyn ConvexCurve>, n: Vector| match c {
+            Some(c) => curve_fid(c, n),
             None if g.as_shape::<HalfSpace>().is_some() => PackedFeatureId::face(0),
             None => PackedFeatureId::UNKNOWN,
         };
-        let fid1 = fid(g1, &c1, sd.normal1);
-        let fid2 = fid(g2, &c2, sd.normal2);
+        let fid1 = fid(g1, c1, sd.normal1);
+        let fid2 = fid(g2, c2, sd.normal2);
         manifold.points.push(TrackedContact::new(p1, p2, fid1, fid2, dist));
     }
     manifold.match_contacts(&old_points);
@@ -250,6 +252,10 @@ where
         manifolds: &mut Vec<ContactManifold<M, C>>,
         workspace: &mut Option<ContactManifoldsWorkspace>,
     ) -> Result<(), Unsupported> {
+        if prediction.is_nan() || prediction < 0.0 {
+            // parry's contract (its composite helpers assert it): no negative or NaN prediction.
+            return Err(Unsupported);
+        }
         if is_composite_like(g1) || is_composite_like(g2) {
             composite_manifolds(self, pos12, g1, g2, prediction, manifolds, workspace);
             return Ok(());
@@ -280,17 +286,16 @@ where
             manifold.clear();
             return Ok(());
         }
-        let sd = if ours {
-            self.signed_distance(pos12, g1, g2)
-        } else {
-            None
-        };
-        match sd {
-            Some(Ok(sd)) => {
+        // Route once: parry shapes are converted to curves a single time per query.
+        let routed = if ours { Some(route(g1, g2)) } else { None };
+        let sd = routed.as_ref().and_then(|r| self.routed_distance(r, pos12));
+        match (sd, &routed) {
+            (Some(Ok(sd)), Some(r)) => {
                 manifold_from_distance(
                     pos12,
                     g1,
                     g2,
+                    r.curves(),
                     &sd,
                     normal_constraints1,
                     normal_constraints2,
@@ -299,18 +304,85 @@ where
                 );
                 Ok(())
             }
-            // Not ours, or our distance failed: parry (through the polygonal feature maps).
-            _ => DefaultQueryDispatcher.contact_manifold_convex_convex(
-                pos12,
-                g1,
-                g2,
-                normal_constraints1,
-                normal_constraints2,
-                prediction,
-                manifold,
-            ),
+            // Not ours, or our distance failed: parry (through the polygonal feature maps),
+            // under the dispatcher's guards (no NaN pose or shape in, no NaN contact out).
+            _ => {
+                if !(crate::dispatcher::guard::pose_ok(pos12) && crate::dispatcher::guard::shapes_ok(g1, g2)) {
+                    manifold.clear();
+                    return Err(Unsupported);
+                }
+                DefaultQueryDispatcher.contact_manifold_convex_convex(
+                    pos12,
+                    g1,
+                    g2,
+                    normal_constraints1,
+                    normal_constraints2,
+                    prediction,
+                    manifold,
+                )?;
+                if ours && manifold.points.is_empty() && parry_within(pos12, g1, g2, prediction) {
+                    touching_manifold(
+                        pos12,
+                        g1,
+                        g2,
+                        normal_constraints1,
+                        normal_constraints2,
+                        prediction,
+                        manifold,
+                    )?;
+                }
+                if !crate::dispatcher::guard::AllFinite::all_finite(manifold) {
+                    manifold.clear();
+                    return Err(Unsupported);
+                }
+                Ok(())
+            }
         }
     }
+}
+
+/// parry's manifold of shapes within the prediction of each other for which parry's own comes
+/// back empty (GJK/EPA give up on shapes that touch or nearly touch, e.g. parallel faces 1e-10
+/// apart, as rapier's CCD leaves them; see `parry_contact` in [`crate::dispatcher`]): computed
+/// with the shapes pushed into each other by a tiny fraction of their size, then each point's
+/// distance recomputed at the true pose.
+#[allow(clippy::too_many_arguments)]
+fn touching_manifold<M, C>(
+    pos12: &Pose,
+    g1: &dyn Shape,
+    g2: &dyn Shape,
+    normal_constraints1: Option<&dyn NormalConstraints>,
+    normal_constraints2: Option<&dyn NormalConstraints>,
+    prediction: Real,
+    manifold: &mut ContactManifold<M, C>,
+) -> Result<(), Unsupported>
+where
+    M: Default + Clone + Send + Sync,
+    C: Default + Copy + Send + Sync,
+{
+    let size = pair_size(g1, g2);
+    for push in TOUCH_PUSH {
+        let deeper = pushed_together(pos12, push * size);
+        DefaultQueryDispatcher.contact_manifold_convex_convex(
+            &deeper,
+            g1,
+            g2,
+            normal_constraints1,
+            normal_constraints2,
+            prediction + push * size,
+            manifold,
+        )?;
+        if manifold.points.is_empty() {
+            continue;
+        }
+        let n1 = manifold.local_n1;
+        for p in &mut manifold.points {
+            p.dist = (pos12.transform_point(p.local_p2) - p.local_p1).dot(n1);
+        }
+        manifold.points.retain(|p| p.dist <= prediction && p.dist.is_finite());
+        return Ok(());
+    }
+    Ok(())
 }
 
 /// parry's `DefaultQueryDispatcher::contact_manifolds` for composite-like shapes, with `d` as

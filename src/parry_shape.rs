@@ -673,6 +673,10 @@ pub(crate) fn ellipse_closest_point(a: f64, b: f64, p: Vector) -> Vector {
     let (e0, e1) = if swap { (b, a) } else { (a, b) };
     let (q0, q1) = if swap { (p.y, p.x) } else { (p.x, p.y) };
     let (y0, y1) = (q0.abs(), q1.abs());
+    // A coordinate below 1e-290 of its semi-axis is 0 to rounding; kept, the bisection below
+    // divides one underflowed number by another (an infinite closest point).
+    let y0 = if y0 < 1e-290 * e0 { 0.0 } else { y0 };
+    let y1 = if y1 < 1e-290 * e1 { 0.0 } else { y1 };
     let (x0, x1);
     if y1 > 0.0 {
         if y0 > 0.0 {
@@ -829,6 +833,11 @@ impl PointQuery for Ellipse {
     fn project_local_point(&self, pt: Vector, solid: bool) -> PointProjection {
         if !pt.is_finite() {
             return PointProjection::new(false, Vector::new(self.half_x(), 0.0));
+        }
+        // A point beyond 1e50 sizes (where Eberly's scaled coordinates overflow): its closest
+        // point is the one whose normal points at it, to within 1e-50 of the size.
+        if pt.x.abs().max(pt.y.abs()) > 1e50 * self.half_x().max(self.half_y()) {
+            return PointProjection::new(false, self.point_with_normal(unit_or_x(pt)));
         }
         let inside = self.contains(pt);
         if inside && solid {

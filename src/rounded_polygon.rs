@@ -80,7 +80,8 @@ impl RoundedPolygon {
 
     /// The convex counter-clockwise polygon `vertices` dilated by `corner_radius`, or why not:
     /// fewer than three vertices, a non-finite vertex, a repeated vertex, a reflex, flat or
-    /// clockwise corner, or a negative or non-finite radius.
+    /// clockwise corner, a negative or non-finite radius, or a length outside
+    /// [[`crate::error::MIN_LENGTH`], [`crate::error::MAX_LENGTH`]] ([`ShapeError::OutOfRange`]).
     pub fn try_new(vertices: &[Vector], corner_radius: f64) -> Result<Self, ShapeError> {
         let r = non_negative("corner_radius", corner_radius)?;
         if vertices.len() < 3 {
@@ -89,6 +90,7 @@ impl RoundedPolygon {
         if let Some(index) = vertices.iter().position(|v| !v.is_finite()) {
             return Err(ShapeError::VertexNotFinite { index });
         }
+        crate::error::vertices_in_range(vertices)?;
         let n = vertices.len();
         let size = vertices
             .iter()
@@ -262,6 +264,11 @@ impl ConvexCurve for RoundedPolygon {
 
     fn bounding_radius(&self) -> f64 {
         self.bounding_radius
+    }
+
+    fn min_radius_of_curvature(&self) -> f64 {
+        // Corners are arcs of the corner radius, edges are flat.
+        self.radius
     }
 
     fn phi_range_of_normal(&self, m: Vector) -> (f64, f64) {

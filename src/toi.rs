@@ -7,46 +7,58 @@
 //! 1. At t₀ the stationary distance gives φ₀ and D₀ = F(φ₀, t₀) ([`crate::stationary`]).
 //! 2. Each step, at an accepted point (φₖ, tₖ) with S ≈ 0 and Dₖ = F(φₖ, tₖ) above the target δ:
 //!    * the Taylor polynomial of S of order 2 (eqs. 7–8) gives the curve's slope φ' = −S_t/S_φ and
-//! ```text
-//!  bending φ'' = −(S_tt + 2S_φt φ' + S_φφ φ'²)/S_φ; along it D' = F_t and D'' = F_tt + F_φt φ'
-//!  (F_φ = −ω₁S vanishes on the curve);
-//! ```
-//!    * the step h is the smallest of the adaptive accuracy step, the window's end, and the
-//! ```text
-//!  **guard** below; the predictor moves to φₖ + φ'h + φ''h²/2 at tₖ + h;
-//! ```
-//!    * the **corrector** solves S(φ, tₖ + h) = 0 by Halley's method at fixed t, reusing the
-//! ```text
-//!  positions at tₖ + h and safeguarded by a bracket (derivatives jump at piece ends);
-//! ```
-//!    * when the corrector fails or has to move φ far from the prediction the step is
-//! ```text
-//!  **backtracked**: h is halved and the step retried.
-//! ```
+//!      bending φ'' = −(S_tt + 2S_φt φ' + S_φφ φ'²)/S_φ; along it D' = F_t and
+//!      D'' = F_tt + F_φt φ' (F_φ = −ω₁S vanishes on the curve);
+//!    * the step h is the smallest of the adaptive accuracy step, a φ-travel of one radian, the
+//!      window's end, and the **guard** below (possibly lengthened by its two-sided form); the
+//!      predictor moves to φₖ − S/S_φ + φ'h + φ''h²/2 at tₖ + h (the first term removes what is
+//!      left of S at the accepted point);
+//!    * the **corrector** solves S(φ, tₖ + h) = 0 by Halley's method at fixed t from the
+//!      prediction, falling back to a bracketed solve when an iteration does not shrink |S|
+//!      (derivatives jump at piece ends). Away from contact it accepts |S| up to a tenth of the
+//!      gap D − δ (and a Newton step |S/S_φ| of 0.03 rad): F at such a φ is below the distance
+//!      by at most 0.5 % of the gap, so most predictions are accepted as they are or after one
+//!      iteration; the tolerance tightens by itself to the side tolerance as the contact nears;
+//!    * when the corrector fails, or lands on a root that is not a maximum of F, the step is
+//!      **backtracked**: h is halved and the step retried.
 //! 3. It stops at contact (Dₖ − δ ≤ tol), when the bounding circles about the rotation centres
-//!    can no longer meet before the window ends, or at the window's end.
+//!    can no longer meet before the window ends, or at the window's end. A miss is reported with
+//!    the witnesses corrected to the side tolerance.
 //!
 //! ## Why no impact is stepped over (the guard)
 //!
-//! Keep φₖ fixed in object1's frame: g(t) = F(φₖ, t) is the gap between the shapes along a
-//! body-fixed axis of object1, so g(t) ≤ D(t) for every t (every F is a lower bound on the
-//! signed distance), with g(tₖ) = Dₖ and g'(tₖ) = F_t(φₖ, tₖ) = D'ₖ. Writing
-//! g = −h₂(m(t)) − (C₁ − C₂)·R(α₁)N₁ − c₂·N − const (world rotation centres C, object2's local
-//! centre c₂, m = −N turning at the relative spin ω = ω₁ − ω₂):
+//! For any unit axis n, the gap G(n, t) between the shapes along n (minus the two support values)
+//! is a lower bound on the signed distance, and F(φ, t) = G(N(φ, t), t). Take the axis that is
+//! object1's normal N(φₖ) at tₖ and turns at a constant rate λ in the world:
+//! g(t) = G(R(λ(t − tₖ))nₖ, t) ≤ D(t), with g(tₖ) = F(φₖ, tₖ) and, since ∂G/∂θ = −S,
+//! g'(tₖ) = F_t − (λ − ω₁)·S. With support functions h̃ᵢ about the rotation centres and ΔC the
+//! offset of the centres, g = −ΔC·n − h̃₁(R(−α₁)n) − h̃₂(−R(−α₂)n), so
 //!
 //! ```text
-//! |g''| ≤ M = ω²·max|h₂''| + 2|ω₁||ΔV| + ω₁²·max|ΔC| + ω²|c₂|,
+//! |g''| ≤ M(λ) = λ²·max|ΔC| + 2|λ||ΔV| + (λ − ω₁)²·H₁ + (λ − ω₂)²·H₂,   Hᵢ ≥ max|h̃ᵢ''|,
 //! ```
 //!
-//! with max|h₂''| = [`ConvexCurve::support_dd_bound`], ΔV the relative velocity of the rotation
-//! centres and max|ΔC| their largest distance over the step (ΔC is affine in t, so its norm is
-//! convex and the maximum sits at an end). Then g(t) ≥ Dₖ + D'ₖh − Mh²/2 on the step, and with
-//! Δ = Dₖ − δ the step h = 2Δ / (−D'ₖ + √(D'ₖ² + 2MΔ)) keeps that bound above the target: D(t) ≥ δ
-//! on [tₖ, tₖ + h]. No dip of the distance below the target can be stepped over, whatever the
+//! with ΔV the relative velocity of the centres and max|ΔC| their largest distance over the step
+//! (ΔC is affine in t, so its norm is convex and the maximum sits at an end). λ = ω₁ (the axis
+//! fixed in object1; H₁ is not needed, which is what a polygon requires) gives the classical
+//! M = ω²H₂ + 2|ω₁||ΔV| + ω₁²max|ΔC|; when object1 is strictly convex the λ minimising M is used
+//! (a weighted mean of 0, ω₁ and ω₂). Hᵢ = |h''|-bound + |cᵢ|, where the |h''|-bound is
+//! [`ConvexCurve::support_dd_bound_near`] over the directions the axis sweeps in the step (for
+//! a thin ellipse far smaller than the global bound a²/b away from its flat sides).
+//!
+//! Then g(t) ≥ gₖ + g'ₖs − Ms²/2 on the step, and with Δ = Dₖ − δ the step
+//! s_A = 2Δ / (−g'ₖ + √(g'ₖ² + 2MΔ)) keeps that bound above the target: D(t) ≥ δ on
+//! [tₖ, tₖ + s_A]. No dip of the distance below the target can be stepped over, whatever the
 //! spin, corner radius or grazing angle, and this does not rely on the corrector's accuracy (φₖ
 //! need not be an exact root: any φ gives a lower bound). Approaching (D' < 0) the guard behaves
 //! like a Newton step on D, so it also converges to the contact; when D' ≥ 0 it is at least
 //! √(2Δ/M).
+//!
+//! **Two-sided form.** The same bound taken backwards from the end of a step, with the point
+//! corrected there, covers [tₖ₊₁ − s_B, tₖ₊₁]; a step is safe when s_A + s_B ≥ tₖ₊₁ − tₖ. The
+//! tracker proposes steps up to 2·s_A (or, approaching, most of the way to where the Taylor model
+//! of D reaches the target), checks s_A + s_B after the correction, and otherwise retries with
+//! the plain guard step s_A.
 //!
 //! ## Contact at the start
 //!
@@ -55,11 +67,33 @@
 //! answer is the first later time the distance comes back down to the target; if the shapes
 //! keep approaching, the answer is t₀.
 
+// The negated comparisons (`!(x > 0.0)`) are deliberate: they are true for NaN.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
 use crate::curve::ConvexCurve;
 use crate::distances::{eval_pair, PairFrame, PairJet, RelativeMotion};
 use crate::math::Vector;
 use crate::stationary::{stationary_in_frame, DistanceOptions, QueryError, Solver};
 use parry2d_f64::query::NonlinearRigidMotion;
+
+/// The |S| a correction accepts.
+#[derive(Copy, Clone)]
+enum Tol {
+    /// This |S| (the side tolerance).
+    Fixed(f64),
+    /// A fraction of the gap away from contact ([`Tracker::loose_side`]).
+    Loose,
+}
+
+/// Halley iterations the corrector tries from the prediction before the bracketed solver.
+const HALLEY_TRIES: usize = 4;
+/// |S| accepted away from contact, as a fraction of the gap F − δ ([`Tracker::side_tol_at`]).
+const LOOSE_SIDE: f64 = 0.1;
+/// Away from contact the residual's Newton step |S/S_φ| must also stay below this (radians):
+/// on a flat piece S can be large while F is exact.
+const LOOSE_PHI: f64 = 3e-2;
+/// Largest φ-travel of one predictor step (radians).
+const MAX_TRAVEL: f64 = 1.0;
 
 /// Tolerances, caps and switches of [`time_of_impact`]. Distances are relative to the size s
 /// of the pair: the larger bounding radius of the two shapes about their local origins.
@@ -73,6 +107,10 @@ pub struct ToiOptions {
     pub side_tolerance: f64,
     /// Cap on accepted predictor steps (default 20 000).
     pub max_steps: usize,
+    /// Cap on pair evaluations of one query, all steps together (default 1 000 000: tens of
+    /// milliseconds; ordinary queries take tens to thousands). Reaching it ends the query with
+    /// [`ToiStatus::OutOfIterations`]; it bounds the time of a query whatever the input.
+    pub max_evaluations: usize,
     /// Cap on Halley iterations of one correction (default 30).
     pub max_corrector_iterations: usize,
     /// Report an initial contact immediately (true) or look past a separating one (false).
@@ -88,6 +126,7 @@ impl Default for ToiOptions {
             distance_tolerance: 1e-10,
             side_tolerance: 1e-10,
             max_steps: 20_000,
+            max_evaluations: 1_000_000,
             max_corrector_iterations: 30,
             stop_at_penetration: true,
             distance: DistanceOptions::default(),
@@ -95,16 +134,34 @@ impl Default for ToiOptions {
     }
 }
 
-/// How a time-of-impact query ended.
+/// How a time-of-impact query ([`time_of_impact`], [`crate::halfspace::time_of_impact_halfspace`])
+/// ended. Whatever the status, `time` lies in `[start_time, end_time]` and every number of the
+/// [`TimeOfImpact`] is finite; bad input is a [`QueryError`] instead. Below, δ is the target
+/// distance, tol = `distance_tolerance`·s and s the larger bounding radius of the two shapes.
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
 pub enum ToiStatus {
-    /// The shapes reach the target distance at `time` (within the tolerances) and not before.
+    /// The shapes reach the target distance at `time` and not before:
+    /// δ − 1e-12·s ≤ D(`time`) ≤ δ + tol, and D > δ − 1e-12·s on [start, `time`).
+    ///
+    /// One exception, with `stop_at_penetration = false` only: shapes in contact at the start
+    /// and separating are followed until they part; if they approach again while still in
+    /// contact, `time` is that moment and `distance` ≤ δ + tol (rapier's CCD for solid bodies).
     Hit,
-    /// The shapes are within the target distance at the start (`time` is the start time).
+    /// The shapes are within δ + tol at the start, and `stop_at_penetration` is set or they are
+    /// approaching (D' ≤ 0 along the contact): `time` is the start time. Also the answer of an
+    /// empty window (`start_time == end_time`) with the shapes in contact.
     PenetratingAtStart,
-    /// No contact in the window (the window ended or the bounding circles parted for good).
+    /// No contact in the window: D > δ − 1e-12·s until `end_time` (a graze that comes within
+    /// tol of δ without reaching it may end either way), or the bounding circles about the
+    /// rotation centres part for good (`time` is where tracking stopped). Also: an empty window
+    /// with the shapes apart, and, with `stop_at_penetration = false`, a contact at the start
+    /// that keeps separating until the window ends.
     NoHit,
-    /// The step cap was reached: no contact before `time`, nothing known after.
+    /// A cap was reached before the window was covered: [`ToiOptions::max_steps`] predictor
+    /// steps, [`ToiOptions::max_evaluations`] pair evaluations, or a step the guard allows is
+    /// too short to advance `time` in floating point (a spin too fast for the window). No
+    /// contact in [start, `time`); nothing is known after. Seen with thin ellipses (1:1e6)
+    /// spinning for many turns, and beyond the supported scales and axis ratios (README, Limits).
     OutOfIterations,
 }
 
@@ -243,7 +300,7 @@ pub fn time_of_impact(
     end_time: f64,
     options: &ToiOptions,
 ) -> Result<TimeOfImpact, QueryError> {
-    toi_roles(
+    crate::error::finite_toi(toi_roles(
         shape1,
         motion1,
         shape2,
@@ -252,7 +309,7 @@ pub fn time_of_impact(
         end_time,
         options,
         &mut NoTrace,
-    )
+    ))
 }
 
 /// As [`time_of_impact`], recording every predictor step, correction and backtrack in `trace`
@@ -269,7 +326,9 @@ pub fn time_of_impact_traced(
     options: &ToiOptions,
     trace: &mut Vec<TraceEvent>,
 ) -> Result<TimeOfImpact, QueryError> {
-    toi_roles(shape1, motion1, shape2, motion2, start_time, end_time, options, trace)
+    crate::error::finite_toi(toi_roles(
+        shape1, motion1, shape2, motion2, start_time, end_time, options, trace,
+    ))
 }
 
 #[allow(clippy::too_many_arguments)]
@@ -316,8 +375,15 @@ struct Tracker<'a> {
     reach: f64,
     tol_d: f64,
     side_tol: f64,
-    h2dd: f64,
+    /// |c₂|, |c₁|: the rotation centres' distances from the local origins (support functions
+    /// about the rotation centres: |h̃''| ≤ |h''| + |c|).
     c2_len: f64,
+    c1_len: f64,
+    /// Object1 is strictly convex (its support function has a bounded h'').
+    obj1_convex: bool,
+    /// The global bounds on |h''| of each ([`ConvexCurve::support_dd_bound`]).
+    h1_global: f64,
+    h2_global: f64,
     cost: ToiCost,
 }
 
@@ -334,7 +400,8 @@ impl<'a> Tracker<'a> {
         if !(motion_is_finite(m1) && motion_is_finite(m2) && t0.is_finite() && t1.is_finite()) {
             return Err(QueryError::NonFinite);
         }
-        if !(opts.target_distance.is_finite() && opts.target_distance >= 0.0) {
+        if !opts.is_valid() {
+            // A target or tolerance that is NaN, infinite or negative.
             return Err(QueryError::NonFinite);
         }
         if t1 < t0 {
@@ -359,8 +426,11 @@ impl<'a> Tracker<'a> {
             reach,
             tol_d: opts.distance_tolerance * size,
             side_tol: opts.side_tolerance * size,
-            h2dd: obj2.support_dd_bound(),
             c2_len: c2.length(),
+            c1_len: c1.length(),
+            obj1_convex: obj1.is_strictly_convex() && obj1.support_dd_bound().is_finite(),
+            h1_global: obj1.support_dd_bound(),
+            h2_global: obj2.support_dd_bound(),
             cost: ToiCost::default(),
         })
     }
@@ -380,17 +450,53 @@ impl<'a> Tracker<'a> {
         (p + v * s).length() > self.reach * (1.0 + 1e-12)
     }
 
-    /// M of the guard on [t, t + h] (module docs).
-    fn guard_bound(&self, t: f64, h: f64) -> f64 {
-        let w = self.rel.omega();
-        let w1 = self.omega1;
+    /// The guard's bound on [t, t + h] (module docs): the axis turns at λ in the world, and
+    /// M(λ) = λ²·max|ΔC| + 2|λ||ΔV| + (λ − ω₁)²H₁ + (λ − ω₂)²H₂ bounds |g''| of the gap along
+    /// it. λ = ω₁ (the axis fixed in object1, H₁ not needed) unless object1 is strictly convex,
+    /// in which case the λ minimising M is taken. Returns (M, λ).
+    fn guard_bound(&self, t: f64, h: f64, local: Option<&PairJet>) -> (f64, f64) {
+        let (w1, w2) = (self.omega1, self.rel.omega2());
+        let w = w1 - w2;
         let dc = self
             .rel
             .center_offset(t)
             .length()
             .max(self.rel.center_offset(t + h).length());
         let dv = self.rel.center_velocity().length();
-        w * w * (self.h2dd + self.c2_len) + 2.0 * w1.abs() * dv + w1 * w1 * dc
+        // The axis turns at λ − ωᵢ against shape i; the optimal λ lies between 0, ω₁ and ω₂,
+        // so over [t, t + h] the directions stay within these angles of the current ones.
+        let sweep2 = if self.obj1_convex {
+            w2.abs().max(w.abs())
+        } else {
+            w.abs()
+        } * h;
+        let h2 = match local {
+            Some(j) => self.obj2.support_dd_bound_near(-j.normal_in_2, sweep2),
+            None => self.h2_global,
+        } + self.c2_len;
+        let m_body = w * w * h2 + 2.0 * w1.abs() * dv + w1 * w1 * dc;
+        let mut best = (m_body, w1);
+        if self.obj1_convex {
+            let sweep1 = w1.abs().max(w.abs()) * h;
+            let h1 = match local {
+                Some(j) => self.obj1.support_dd_bound_near(j.curve1.normal, sweep1),
+                None => self.h1_global,
+            } + self.c1_len;
+            let m_at = |l: f64| l * l * dc + 2.0 * l.abs() * dv + (l - w1) * (l - w1) * h1 + (l - w2) * (l - w2) * h2;
+            let den = dc + h1 + h2;
+            if den > 0.0 {
+                // M is a convex quadratic on each side of λ = 0: its minimiser on each side.
+                for sign in [1.0, -1.0] {
+                    let l = (w1 * h1 + w2 * h2 - sign * dv) / den;
+                    let l = if l * sign >= 0.0 { l } else { 0.0 };
+                    let m = m_at(l);
+                    if m < best.0 {
+                        best = (m, l);
+                    }
+                }
+            }
+        }
+        best
     }
 
     fn solver(&self, frame: PairFrame) -> Solver<'a> {
@@ -419,9 +525,39 @@ impl<'a> Tracker<'a> {
         }
     }
 
-    /// Global stationary distance at t starting from φ: (φ, full jet).
-    fn global_at(&mut self, t: f64, phi: f64) -> Result<(f64, PairJet), QueryError> {
+    /// The result for a point tracked with the loose tolerance: corrected to the side tolerance
+    /// first, so that the reported distance and witnesses are exact.
+    fn finish(&mut self, status: ToiStatus, t: f64, phi: f64, j: PairJet) -> TimeOfImpact {
+        let tight = Tol::Fixed(self.side_tol);
+        if self.accepts(tight, &j) {
+            return self.result(status, t, &j);
+        }
+        let mut sv = self.solver(self.rel.frame(t));
+        let r = self.solve_from(&mut sv, phi, j, tight);
+        self.cost.evaluations += sv.evaluations;
+        self.cost.corrector_iterations += sv.evaluations;
+        match r {
+            Some((_, jt)) if jt.fwd.v >= j.fwd.v => self.result(status, t, &jt),
+            _ => self.result(status, t, &j),
+        }
+    }
+
+    /// Global stationary distance at t starting from φ: (φ, full jet). The local solve comes
+    /// first, as in [`stationary_in_frame`]: a root of S with F > 0 is the global maximum, and its
+    /// jet is kept; otherwise the full search runs.
+    fn global_at(&mut self, t: f64, phi: f64, tol: Tol) -> Result<(f64, PairJet), QueryError> {
         let frame = self.rel.frame(t);
+        let mut sv = Solver {
+            side_tol: self.opts.distance.side_tolerance * self.size,
+            max_iter: self.opts.distance.max_local_iterations,
+            ..self.solver(frame)
+        };
+        let local = self.solve(&mut sv, phi, tol);
+        self.cost.evaluations += sv.evaluations;
+        self.cost.corrector_iterations += sv.evaluations.saturating_sub(1);
+        if let Some((p, j)) = local.filter(|(_, j)| j.fwd.v > 0.0) {
+            return Ok((p, j));
+        }
         let r = stationary_in_frame(self.obj1, self.obj2, frame, phi, &self.opts.distance)?;
         self.cost.evaluations += r.evaluations;
         self.cost.corrector_iterations += r.newton_iterations;
@@ -430,12 +566,99 @@ impl<'a> Tracker<'a> {
         Ok((r.phi, j))
     }
 
-    /// Corrects φ at fixed t (Halley in a bracket); returns the root and its full jet.
-    fn correct<T: Tracer>(&mut self, t: f64, phi: f64, trace: &mut T) -> Option<(f64, PairJet)> {
+    /// Whether `j` is accepted as a root of S under `tol` ([`Tol`]).
+    #[inline]
+    fn accepts(&self, tol: Tol, j: &PairJet) -> bool {
+        let (s, s1) = (j.side.v.abs(), j.side.p);
+        s1 > 0.0
+            && match tol {
+                Tol::Fixed(x) => s <= x,
+                Tol::Loose => s <= self.loose_side(j.fwd.v) && s <= LOOSE_PHI * s1,
+            }
+    }
+
+    /// The |S| handed to the bracketed solver under `tol` at a point with distance `fwd` and
+    /// slope `s1` = S_φ.
+    #[inline]
+    fn bracket_tol(&self, tol: Tol, fwd: f64, s1: f64) -> f64 {
+        match tol {
+            Tol::Fixed(x) => x,
+            Tol::Loose => {
+                let x = self.loose_side(fwd);
+                if s1 > 0.0 {
+                    x.min(LOOSE_PHI * s1).max(self.side_tol)
+                } else {
+                    self.side_tol
+                }
+            }
+        }
+    }
+
+    /// The |S| accepted away from contact at a point with distance `fwd`: a fraction of the gap
+    /// F − δ, never below the side tolerance — so it tightens by itself as the contact nears.
+    /// An inexact root costs F(φ) ≈ D − S²/(2(ρ₁ + ρ₂ + F)) ≥ D − S²/(2·gap): with
+    /// `LOOSE_SIDE` = 0.1, F is low by at most 0.5 % of the gap, which only shortens the next
+    /// guard step a little. The guard itself does not depend on it: F(φ, t) at any φ is a lower
+    /// bound on the distance.
+    #[inline]
+    fn loose_side(&self, fwd: f64) -> f64 {
+        (LOOSE_SIDE * (fwd - self.opts.target_distance)).max(self.side_tol)
+    }
+
+    /// Solves S(φ) = 0 at the solver's fixed time from `phi`: Halley iterations (cubic
+    /// convergence: none or one after an order-2 prediction), falling back to the bracketed
+    /// solver of the stationary distance when an iteration does not shrink |S| or would move φ
+    /// by more than 0.3. Returns the root (S_φ > 0) and its full jet.
+    fn solve(&self, sv: &mut Solver, phi: f64, tol: Tol) -> Option<(f64, PairJet)> {
+        let j = sv.eval(phi)?;
+        self.solve_from(sv, phi, j, tol)
+    }
+
+    /// As [`Tracker::solve`] from an already evaluated point.
+    fn solve_from(&self, sv: &mut Solver, phi: f64, j: PairJet, tol: Tol) -> Option<(f64, PairJet)> {
+        let (mut x, mut j) = (phi, j);
+        for _ in 0..HALLEY_TRIES {
+            if self.accepts(tol, &j) {
+                return Some((x, j));
+            }
+            let (s, s1, s2) = (j.side.v, j.side.p, j.side.pp);
+            if !(s1 > 0.0) {
+                break;
+            }
+            let denom = 2.0 * s1 * s1 - s * s2;
+            let step = if denom > 0.0 { -2.0 * s * s1 / denom } else { -s / s1 };
+            if !(step.abs() <= 0.3) {
+                break;
+            }
+            let Some(jn) = sv.eval(x + step) else { break };
+            if !(jn.side.v.abs() < s.abs()) {
+                // Not converging (a piece end, a far root): bracket between the two if S
+                // changes sign, otherwise start the bracketed solver from the better point.
+                if (jn.side.v > 0.0) != (s > 0.0) {
+                    sv.side_tol = self.bracket_tol(tol, j.fwd.v.min(jn.fwd.v), s1);
+                    return if step > 0.0 {
+                        sv.bracketed_root(x, j, x + step, jn)
+                    } else {
+                        sv.bracketed_root(x + step, jn, x, j)
+                    };
+                }
+                break;
+            }
+            x += step;
+            j = jn;
+        }
+        if self.accepts(tol, &j) {
+            return Some((x, j));
+        }
+        sv.side_tol = self.bracket_tol(tol, j.fwd.v, j.side.p);
+        sv.local_root(x, j)
+    }
+
+    /// Corrects φ at fixed t ([`Tracker::solve`]); returns the root and its full jet.
+    fn correct<T: Tracer>(&mut self, t: f64, phi: f64, tol: Tol, trace: &mut T) -> Option<(f64, PairJet)> {
         let frame = self.rel.frame(t);
         let mut sv = self.solver(frame);
-        let j0 = sv.eval(phi)?;
-        let r = sv.local_root(phi, j0);
+        let r = self.solve(&mut sv, phi, tol);
         self.cost.evaluations += sv.evaluations;
         // The first evaluation is the prediction itself; the rest are Halley/bisection steps.
         self.cost.corrector_iterations += sv.evaluations.saturating_sub(1);
@@ -456,7 +679,12 @@ impl<'a> Tracker<'a> {
             Vector::X
         };
         let phi_start = self.obj1.phi_range_of_normal(dir2).0;
-        let (mut phi, mut j) = self.global_at(self.t0, phi_start)?;
+        // Loose is enough at the start when tracking follows: it is tight within the tolerance
+        // of the target, and a miss reported later is polished ([`Tracker::finish`]). When the
+        // bounding circles never meet, the answer is this distance: tight at once.
+        let parted = self.parted_for_rest(self.t0);
+        let tol0 = if parted { Tol::Fixed(self.side_tol) } else { Tol::Loose };
+        let (mut phi, mut j) = self.global_at(self.t0, phi_start, tol0)?;
         let mut t = self.t0;
         trace.push(TraceEvent::Start {
             phi,
@@ -482,66 +710,130 @@ impl<'a> Tracker<'a> {
                 return Ok(self.result(ToiStatus::Hit, t, &j));
             }
         }
-        if self.parted_for_rest(t) {
-            return Ok(self.result(ToiStatus::NoHit, t, &j));
+        if parted || self.parted_for_rest(t) {
+            return Ok(self.finish(ToiStatus::NoHit, t, phi, j));
         }
 
-        let mut h_acc = (window / 8.0).max(f64::MIN_POSITIVE);
-        let max_dphi = 0.35;
+        let mut h_acc = (window * 0.5).max(f64::MIN_POSITIVE);
+        // After a failed two-sided step, the next try is the plain guard step.
+        let mut retry_plain = false;
         loop {
             let gap = j.fwd.v - delta;
             if gap <= self.tol_d {
                 let r = self.refine_hit(t, phi, j, trace);
                 return Ok(r);
             }
-            if self.cost.predictor_steps >= self.opts.max_steps {
-                return Ok(self.result(ToiStatus::OutOfIterations, t, &j));
+            if self.cost.predictor_steps >= self.opts.max_steps || self.cost.evaluations >= self.opts.max_evaluations {
+                return Ok(self.finish(ToiStatus::OutOfIterations, t, phi, j));
             }
             let h_max = self.t1 - t;
             if h_max <= 0.0 {
-                return Ok(self.result(ToiStatus::NoHit, self.t1, &j));
+                return Ok(self.finish(ToiStatus::NoHit, self.t1, phi, j));
             }
             // Taylor data of the curve S = 0 at (φ, t).
-            let s = j.side;
-            let (dphi, ddphi) = if s.p > 0.0 {
-                let d1 = -s.t / s.p;
-                let d2 = -(s.tt + 2.0 * s.pt * d1 + s.pp * d1 * d1) / s.p;
-                (d1, d2)
-            } else {
-                (0.0, 0.0)
-            };
-            let d1 = j.fwd.t;
+            let (resid, dphi, ddphi) = curve_taylor(&j);
             let mut h = h_acc.min(h_max);
             // Limit the φ-travel of one step (the curve's bending, eq. 8): the largest h with
             // |φ'|h + |φ''|h²/2 ≤ max_dphi.
             let travel = dphi.abs() * h + 0.5 * ddphi.abs() * h * h;
-            if travel > max_dphi {
-                h = 2.0 * max_dphi / (dphi.abs() + (dphi * dphi + 2.0 * ddphi.abs() * max_dphi).sqrt());
+            if travel > MAX_TRAVEL {
+                h = 2.0 * MAX_TRAVEL / (dphi.abs() + (dphi * dphi + 2.0 * ddphi.abs() * MAX_TRAVEL).sqrt());
             }
-            // The guard (module docs).
-            let m = self.guard_bound(t, h);
-            let h_guard = 2.0 * gap / (-d1 + (d1 * d1 + 2.0 * m * gap).sqrt());
+            // The guard (module docs): along an axis turning at λ, g(t_k) = F and
+            // g'(t_k) = F_t − (λ − ω₁)·S.
+            // M holds on [t, t + span]; the curvature bounds are local to the directions the
+            // span sweeps, so a shorter span (with room for the two-sided extension) may allow
+            // a longer guard step.
+            let mut span = h;
+            let (mut m, mut lam) = self.guard_bound(t, span, None);
+            let slope_at = |lam: f64| j.fwd.t - (lam - self.omega1) * j.side.v;
+            let mut h_guard = guard_step(gap, slope_at(lam), m);
+            if h_guard < h {
+                // Limited with the global curvature bounds: try the local ones.
+                let span2 = (2.5 * h_guard).min(span);
+                let (m2, lam2) = self.guard_bound(t, span2, Some(&j));
+                let hg2 = guard_step(gap, slope_at(lam2), m2).min(span2);
+                if hg2 > h_guard {
+                    (m, lam, h_guard, span) = (m2, lam2, hg2, span2);
+                }
+            }
             let guard_limited = h_guard.is_finite() && h_guard < h;
-            if guard_limited {
+            // Two-sided guard: a step longer than h_guard is safe when the bound taken backwards
+            // from its end covers the rest, s_A + s_B ≥ h (checked after the correction). The
+            // length is chosen from the Taylor model of D along the curve.
+            let mut extended = None;
+            if guard_limited && !retry_plain {
+                let d2 = j.fwd.tt + j.fwd.pt * dphi;
+                let mut he = (2.0 * h_guard).min(span);
+                // Where the Taylor model of D reaches the target (NaN or infinite if it does not).
+                let h_model = guard_step(gap, j.fwd.t, -d2);
+                if h_model > h_guard && h_model < he {
+                    // Approaching: land short of the model's contact, a tenth of the way back to
+                    // the guard step.
+                    he = h_guard + 0.9 * (h_model - h_guard);
+                } else {
+                    for _ in 0..3 {
+                        let g_end = gap + he * (j.fwd.t + 0.5 * d2 * he);
+                        if !(g_end > 0.0) {
+                            he = h_guard;
+                            break;
+                        }
+                        let s_b = guard_step(g_end, -(j.fwd.t + d2 * he), m);
+                        he = ((h_guard + s_b) / 1.1).min(span);
+                    }
+                }
+                if he > 1.05 * h_guard {
+                    extended = Some(h_guard);
+                    h = he;
+                }
+            }
+            if guard_limited && extended.is_none() {
                 h = h_guard;
             }
+            retry_plain = false;
             if h.is_nan() || h <= 0.0 || t + h <= t {
                 // No representable progress: the guard pins us at t.
-                return Ok(self.result(ToiStatus::OutOfIterations, t, &j));
+                return Ok(self.finish(ToiStatus::OutOfIterations, t, phi, j));
             }
             let t_new = if h >= h_max { self.t1 } else { t + h };
-            let phi_pred = phi + dphi * h + 0.5 * ddphi * h * h;
+            // The accepted point may leave a residual S (loose tolerance away from contact):
+            // its Newton correction joins the Taylor step.
+            let phi_pred = phi + resid + h * (dphi + 0.5 * ddphi * h);
             trace.push(TraceEvent::Predict {
                 phi: phi_pred,
                 t: t_new,
             });
-            let corrected = self.correct(t_new, phi_pred, trace);
+            let corrected = self.correct(t_new, phi_pred, Tol::Loose, trace);
             let accept = match corrected {
                 Some((phi_c, jc)) => {
                     // Reject when the corrector had to move far from the prediction, or landed on
                     // a root that is not a maximum of F.
-                    let moved = (phi_c - phi_pred).abs();
-                    let ok = jc.side.p > 0.0 && moved <= 0.25 && jc.fwd.v > delta - self.tol_d;
+                    // How far the prediction was from the curve: the corrector's move plus the
+                    // Newton estimate of what is left.
+                    let moved = (phi_c - phi_pred).abs()
+                        + if jc.side.p > 0.0 {
+                            (jc.side.v / jc.side.p).abs()
+                        } else {
+                            0.0
+                        };
+                    // Far moves are harmless away from contact (a root of S with S_φ > 0 and
+                    // F > 0 is the global maximum wherever it is), but a contact claimed after
+                    // one is not trusted: it could be a local maximum of F ≤ 0 of another branch.
+                    let gap_c = jc.fwd.v - delta;
+                    let mut ok = jc.side.p > 0.0 && gap_c > -self.tol_d && (moved <= 0.25 || gap_c > self.tol_d);
+                    if let Some(s_a) = extended.filter(|_| ok) {
+                        // Backward bound from the new point: g(t_new − s) ≥ gap_B − g'·s − M s²/2.
+                        let gap_b = jc.fwd.v - delta;
+                        let slope_b = jc.fwd.t - (lam - self.omega1) * jc.side.v;
+                        let s_b = if gap_b > 0.0 {
+                            guard_step(gap_b, -slope_b, m)
+                        } else {
+                            0.0
+                        };
+                        if !(s_a + s_b >= h) {
+                            ok = false;
+                        }
+                    }
                     if ok {
                         Some((phi_c, jc, moved))
                     } else {
@@ -568,18 +860,18 @@ impl<'a> Tracker<'a> {
                     });
                     if !guard_limited || h >= h_acc * 0.99 {
                         // Adapt the accuracy step to how far the prediction was off.
-                        if moved < 1e-3 {
+                        if moved < 1e-2 {
                             h_acc *= 2.0;
-                        } else if moved > 0.05 {
+                        } else if moved > 0.3 {
                             h_acc *= 0.5;
                         }
                     }
                     h_acc = h_acc.min(window).max(window * 1e-12);
                     if j.fwd.v > delta + self.tol_d && self.parted_for_rest(t) {
-                        return Ok(self.result(ToiStatus::NoHit, t, &j));
+                        return Ok(self.finish(ToiStatus::NoHit, t, phi, j));
                     }
                     if t >= self.t1 && j.fwd.v > delta + self.tol_d {
-                        return Ok(self.result(ToiStatus::NoHit, self.t1, &j));
+                        return Ok(self.finish(ToiStatus::NoHit, self.t1, phi, j));
                     }
                 }
                 None => {
@@ -588,11 +880,17 @@ impl<'a> Tracker<'a> {
                         phi: phi_pred,
                         t: t_new,
                     });
+                    if extended.is_some() {
+                        // A two-sided step that failed (or whose correction failed): retry with the
+                        // plain guard step, which is safe by itself.
+                        retry_plain = true;
+                        continue;
+                    }
                     h_acc = h.min(h_acc) * 0.5;
                     if h_acc <= window * 1e-13 {
                         // Cannot make progress by tracking: recover with the global distance.
                         let t_try = t + h;
-                        let (p2, j2) = self.global_at(t_try, phi_pred)?;
+                        let (p2, j2) = self.global_at(t_try, phi_pred, Tol::Fixed(self.side_tol))?;
                         self.cost.predictor_steps += 1;
                         t = t_try;
                         phi = p2;
@@ -621,7 +919,7 @@ impl<'a> Tracker<'a> {
         };
         // Newton from the safe side.
         let (mut ts, mut ps, mut js) = (t, phi, j);
-        let mut beyond: Option<(f64, f64, f64)> = None;
+        let mut beyond: Option<(f64, f64, f64, PairJet)> = None;
         for _ in 0..8 {
             let gap = js.fwd.v - delta;
             let d1 = js.fwd.t;
@@ -632,7 +930,12 @@ impl<'a> Tracker<'a> {
             if t_n <= ts {
                 break;
             }
-            let Some((phi_n, jn)) = self.correct(t_n, ps, &mut NoTrace) else {
+            let Some((phi_n, jn)) = self.correct(
+                t_n,
+                predict_phi(ps, &js, t_n - ts),
+                Tol::Fixed(self.side_tol),
+                &mut NoTrace,
+            ) else {
                 break;
             };
             if better(&best, &jn) {
@@ -640,25 +943,31 @@ impl<'a> Tracker<'a> {
             }
             let gn = jn.fwd.v - delta;
             if gn < 0.0 {
-                beyond = Some((t_n, phi_n, gn));
+                beyond = Some((t_n, phi_n, gn, jn));
                 break;
             }
             (ts, ps, js) = (t_n, phi_n, jn);
         }
-        if let Some((tb0, pb, gb0)) = beyond.filter(|b| b.2 < -fine) {
+        if let Some((tb0, pb, gb0, jb)) = beyond.filter(|b| b.2 < -fine) {
             // Illinois regula falsi between (ts, gap > 0) and (tb, gb < 0).
             let (mut ta, mut ga, mut tb, mut gb) = (ts, js.fwd.v - delta, tb0, gb0);
             let mut side = 0i8;
-            let mut p = pb;
+            // The last corrected point, to predict φ at the next sample.
+            let mut last = (tb0, pb, jb);
             for _ in 0..40 {
                 let tm = (ta * gb - tb * ga) / (gb - ga);
                 if !(tm > ta && tm < tb) {
                     break;
                 }
-                let Some((pm, jm)) = self.correct(tm, p, &mut NoTrace) else {
+                let Some((pm, jm)) = self.correct(
+                    tm,
+                    predict_phi(last.1, &last.2, tm - last.0),
+                    Tol::Fixed(self.side_tol),
+                    &mut NoTrace,
+                ) else {
                     break;
                 };
-                p = pm;
+                last = (tm, pm, jm);
                 if better(&best, &jm) {
                     best = (tm, pm, jm);
                 }
@@ -707,7 +1016,11 @@ impl<'a> Tracker<'a> {
                 return Ok(None);
             }
             let t_new = (t + h).min(self.t1);
-            let (p2, j2) = self.global_at(t_new, phi)?;
+            if !(t_new > t) {
+                // A window below the resolution of time (h = 0): as an empty window, no hit.
+                return Ok(None);
+            }
+            let (p2, j2) = self.global_at(t_new, phi, Tol::Fixed(self.side_tol))?;
             self.cost.predictor_steps += 1;
             t = t_new;
             phi = p2;
@@ -724,11 +1037,141 @@ impl<'a> Tracker<'a> {
     }
 }
 
+/// The largest h with gap + slope·h − M h²/2 ≥ 0 (the guard; infinite when M = 0 ≤ slope).
+#[inline]
+fn guard_step(gap: f64, slope: f64, m: f64) -> f64 {
+    2.0 * gap / (-slope + (slope * slope + 2.0 * m * gap).sqrt())
+}
+
+/// Taylor data of the curve S = 0 through a corrected point (eqs. 7–8): the Newton correction
+/// −S/S_φ of a residual S, the slope φ' = −S_t/S_φ and the bending
+/// φ'' = −(S_tt + 2S_φt φ' + S_φφ φ'²)/S_φ (all zero when S_φ ≤ 0).
+#[inline]
+fn curve_taylor(j: &PairJet) -> (f64, f64, f64) {
+    let s = j.side;
+    if s.p > 0.0 {
+        let d1 = -s.t / s.p;
+        let d2 = -(s.tt + 2.0 * s.pt * d1 + s.pp * d1 * d1) / s.p;
+        (-s.v / s.p, d1, d2)
+    } else {
+        (0.0, 0.0, 0.0)
+    }
+}
+
+/// φ on the curve S = 0 at time offset h from the corrected point (φ, j) (order-2 Taylor).
+#[inline]
+fn predict_phi(phi: f64, j: &PairJet, h: f64) -> f64 {
+    let (resid, d1, d2) = curve_taylor(j);
+    phi + resid + d1 * h + 0.5 * d2 * h * h
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::math::Pose;
     use crate::{BallCurve, Ellipse, RoundedPolygon};
+
+    /// A small deterministic generator for the randomised checks below.
+    struct Lcg(u64);
+    impl Lcg {
+        fn next(&mut self) -> f64 {
+            self.0 = self
+                .0
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (self.0 >> 11) as f64 / (1u64 << 53) as f64
+        }
+        fn range(&mut self, lo: f64, hi: f64) -> f64 {
+            lo + (hi - lo) * self.next()
+        }
+    }
+
+    /// World support value max over shape of x·u at pose.
+    fn world_support(c: &dyn ConvexCurve, pose: &Pose, u: Vector) -> f64 {
+        let local = pose.rotation.inverse_transform_vector(u);
+        (*pose * c.support_point(local)).dot(u)
+    }
+
+    #[test]
+    fn guard_parabola_bounds_the_gap_along_the_turning_axis() {
+        // For random pairs, motions, points φ (roots or not) and steps: along the axis that
+        // starts at object1's normal N(φ) and turns at the guard's λ, the gap G(t) stays above
+        // F + g'·s − M s²/2 with g' = F_t − (λ − ω₁)S, M from `guard_bound` (global and local
+        // curvature bounds) — the inequality the guard and its two-sided check rest on.
+        let shapes: Vec<Box<dyn ConvexCurve>> = vec![
+            Box::new(Ellipse::new(1.0, 0.05)),
+            Box::new(Ellipse::new(0.3, 0.7)),
+            Box::new(BallCurve { radius: 0.4 }),
+            Box::new(RoundedPolygon::regular(5, 0.8, 0.1)),
+            Box::new(RoundedPolygon::regular(3, 0.6, 0.0)),
+        ];
+        let mut rng = Lcg(7);
+        let mut checked = 0;
+        for case in 0..400 {
+            let o1 = &*shapes[case % shapes.len()];
+            let o2 = &*shapes[(case / shapes.len()) % 3];
+            let motion = |rng: &mut Lcg| {
+                NonlinearRigidMotion::new(
+                    Pose::new(
+                        Vector::new(rng.range(-3.0, 3.0), rng.range(-3.0, 3.0)),
+                        rng.range(-3.0, 3.0),
+                    ),
+                    Vector::new(rng.range(-0.2, 0.2), rng.range(-0.2, 0.2)),
+                    Vector::new(rng.range(-4.0, 4.0), rng.range(-4.0, 4.0)),
+                    rng.range(-40.0, 40.0),
+                )
+            };
+            let (m1, m2) = (motion(&mut rng), motion(&mut rng));
+            let tr = Tracker::new(o1, &m1, o2, &m2, 0.0, 1.0, &ToiOptions::default()).unwrap();
+            let t = rng.range(0.0, 0.5);
+            let phi = rng.range(-3.1, 3.1);
+            let Some(j) = eval_pair(o1, o2, &tr.rel.frame(t), phi) else {
+                continue;
+            };
+            let h = rng.range(1e-3, 0.3);
+            for local in [None, Some(&j)] {
+                let (m, lam) = tr.guard_bound(t, h, local);
+                let slope = j.fwd.t - (lam - m1.angvel) * j.side.v;
+                let n0 = m1.position_at_time(t).rotation * j.curve1.normal;
+                for k in 1..=20 {
+                    let s = h * k as f64 / 20.0;
+                    let (p1, p2) = (m1.position_at_time(t + s), m2.position_at_time(t + s));
+                    let n = crate::math::rotate_cs((lam * s).cos(), (lam * s).sin(), n0);
+                    let gap = -world_support(o1, &p1, n) - world_support(o2, &p2, -n);
+                    let bound = j.fwd.v + slope * s - 0.5 * m * s * s;
+                    assert!(
+                        gap >= bound - 1e-9 * (1.0 + bound.abs()),
+                        "case {case}: gap {gap} below the bound {bound} at s = {s} (h = {h}, λ = {lam}, local {})",
+                        local.is_some()
+                    );
+                    checked += 1;
+                }
+            }
+        }
+        assert!(checked > 10_000);
+    }
+
+    #[test]
+    fn local_curvature_bound_of_the_ellipse_covers_its_arc() {
+        let mut rng = Lcg(11);
+        for _ in 0..300 {
+            let e = Ellipse::new(rng.range(0.01, 2.0), rng.range(0.01, 2.0));
+            let psi0 = rng.range(-4.0, 4.0);
+            let w = rng.range(0.0, 1.2) * rng.next();
+            let bound = e.support_dd_bound_near(crate::math::unit(psi0), w);
+            assert!(bound <= e.support_dd_bound() * (1.0 + 1e-12));
+            for k in 0..=200 {
+                let psi = psi0 - w + 2.0 * w * k as f64 / 200.0;
+                let u = crate::math::unit(psi);
+                let sj = e.support_jet(u).unwrap();
+                let hdd = sj.radius_of_curvature - sj.point.dot(u);
+                assert!(
+                    hdd.abs() <= bound * (1.0 + 1e-9),
+                    "{hdd} > {bound} at ψ = {psi}, arc {psi0} ± {w}"
+                );
+            }
+        }
+    }
 
     fn still(x: f64, y: f64, a: f64) -> NonlinearRigidMotion {
         NonlinearRigidMotion::constant_position(Pose::new(Vector::new(x, y), a))

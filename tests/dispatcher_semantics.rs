@@ -1,10 +1,13 @@
 //! SmoothDispatcher keeps parry's semantics: pos12, casts, `stop_at_penetration`, composite
 //! shapes, half-spaces, and bad input.
 
-use parry2d_f64::math::{Pose, Vector};
+use parry2d_f64::math::{Pose, Rotation, Vector};
 use parry2d_f64::query::details::ShapeCastOptions;
-use parry2d_f64::query::{DefaultQueryDispatcher, NonlinearRigidMotion, QueryDispatcher, ShapeCastStatus};
-use parry2d_f64::shape::{Ball, Compound, HalfSpace, SharedShape};
+use parry2d_f64::query::{
+    ContactManifold, DefaultQueryDispatcher, NonlinearRigidMotion, PersistentQueryDispatcher, QueryDispatcher,
+    ShapeCastStatus,
+};
+use parry2d_f64::shape::{Ball, Compound, Cuboid, HalfSpace, Shape, SharedShape};
 use smooth_ccd2d::{Ellipse, RoundedPolygon, SmoothDispatcher};
 
 #[test]
@@ -115,13 +118,17 @@ fn stop_at_penetration_semantics_follow_the_design() {
         .unwrap()
         .unwrap();
     assert_eq!(hit.time_of_impact, 0.0);
-    // For rapier (false): a fast approach is reported just after the start (rapier drops hits
-    // at exactly the start); a slow one (resting, sliding) is left to the contact solver.
+    // For rapier (false): rapier drops hits at exactly the start, so an approaching contact is
+    // reported when it gets deeper than the allowance, a quarter of the thinner ccd_thickness
+    // (0.25·min(0.2, 0.3) = 0.05), or, already that deep, a tenth of the allowance deeper than at
+    // the start: D goes from −0.1 at 1 m/s, so at t = 0.005; a slow one (resting, sliding) that
+    // does not get that deep within the window is left to the contact solver.
     let hit = d
         .cast_shapes_nonlinear(&still, &e, &coming, &b, 0.0, 1.0, false)
         .unwrap()
         .unwrap();
-    assert_eq!(hit.time_of_impact, smooth_ccd2d::dispatcher::START_NUDGE);
+    assert!((hit.time_of_impact - 0.005).abs() < 1e-9, "{}", hit.time_of_impact);
+    assert!(hit.time_of_impact >= smooth_ccd2d::dispatcher::START_NUDGE);
     let creeping = NonlinearRigidMotion::new(
         Pose::new(Vector::new(0.7, 0.0), 0.0),
         Vector::ZERO,
@@ -132,6 +139,184 @@ fn stop_at_penetration_semantics_follow_the_design() {
         .cast_shapes_nonlinear(&still, &e, &creeping, &b, 0.0, 1.0, false)
         .unwrap()
         .is_none());
+}
+
+/// The signed distance (this crate's, or parry's contact for polygonal pairs) along two motions.
+fn signed_at(
+    d: &SmoothDispatcher,
+    m1: &NonlinearRigidMotion,
+    g1: &dyn Shape,
+    m2: &NonlinearRigidMotion,
+    g2: &dyn Shape,
+    t: f64,
+) -> f64 {
+    let pos12 = m1.position_at_time(t).inv_mul(&m2.position_at_time(t));
+    d.contact(&pos12, g1, g2, 10.0).unwrap().expect("within 10").dist
+}
+
+/// An ellipse standing on its flank 10⁻³ deep in a thin wall, drifting at 0.1 m/s towards it
+/// and spinning at 40 rad/s: at the start the contact approaches far too slowly to matter
+/// (0.0017 over the step), but within the step the tip turns 0.15 into the wall. The cast for
+/// rapier (`stop_at_penetration = false`) stops it where the penetration reaches the allowance,
+/// a quarter of the wall's ccd_thickness (0.025): a step that ends there instead of 0.15 deep.
+#[test]
+fn a_spinning_contact_that_dives_within_the_step_is_stopped() {
+    let d = SmoothDispatcher::default();
+    let e = Ellipse::new(0.5, 0.2);
+    let wall = Cuboid::new(Vector::new(0.025, 3.0));
+    let dt = 1.0 / 60.0;
+    let m1 = NonlinearRigidMotion::new(
+        Pose::new(Vector::ZERO, std::f64::consts::FRAC_PI_2),
+        Vector::ZERO,
+        Vector::new(0.1, 0.0),
+        40.0,
+    );
+    // Face at x = 0.199.
+    let m2 = NonlinearRigidMotion::constant_position(Pose::translation(0.224, 0.0));
+    let d0 = signed_at(&d, &m1, &e, &m2, &wall, 0.0);
+    let d_end = signed_at(&d, &m1, &e, &m2, &wall, dt);
+    assert!((d0 + 1e-3).abs() < 1e-12 && d_end < -0.14, "{d0} {d_end}");
+    let allowance = 0.25 * 0.025;
+    let hit = d
+        .cast_shapes_nonlinear(&m1, &e, &m2, &wall, 0.0, dt, false)
+        .unwrap()
+        .expect("the dive is a hit");
+    let t = hit.time_of_impact;
+    let dt_hit = signed_at(&d, &m1, &e, &m2, &wall, t);
+    println!(
+        "spinning dive: D from {d0:.3e} to {d_end:.3e} over the step; hit at {:.4} of the step, D there {dt_hit:.6e} \
+         (minus the allowance: {:.6e})",
+        t / dt,
+        -allowance
+    );
+    assert!(t > 0.0 && t < dt);
+    assert!((dt_hit + allowance).abs() < 1e-9, "{dt_hit}");
+    for k in 0..200 {
+        let tk = t * k as f64 / 200.0;
+        assert!(signed_at(&d, &m1, &e, &m2, &wall, tk) >= -allowance - 1e-12);
+    }
+    // Stopping at penetration: the start.
+    let hit = d
+        .cast_shapes_nonlinear(&m1, &e, &m2, &wall, 0.0, dt, true)
+        .unwrap()
+        .unwrap();
+    assert_eq!(hit.time_of_impact, 0.0);
+}
+
+/// Pairs with no strictly convex side (a rounded polygon against a box) are parry's, under the
+/// same rule for rapier: parry answers an approaching contact at the start with
+/// `time_of_impact = 0`, which rapier discards (a fast body would pass a thin wall); the
+/// dispatcher reports it where the penetration reaches the allowance, a quarter of the wall's
+/// ccd_thickness.
+#[test]
+fn parry_route_contact_at_the_start_is_reported_after_the_start() {
+    let d = SmoothDispatcher::default();
+    let sq = RoundedPolygon::regular(4, 0.5, 0.05);
+    let wall = Cuboid::new(Vector::new(0.025, 3.0));
+    let dt = 1.0 / 60.0;
+    // A flat side facing +x (the square turned by π/4), 10⁻³ into the wall's face at x = 0.
+    let half = 0.5 * std::f64::consts::FRAC_1_SQRT_2 + 0.05;
+    let m2 = NonlinearRigidMotion::constant_position(Pose::translation(0.025, 0.0));
+    let at = |v: f64| {
+        NonlinearRigidMotion::new(
+            Pose::new(Vector::new(-half + 1e-3, 0.0), std::f64::consts::FRAC_PI_4),
+            Vector::ZERO,
+            Vector::new(v, 0.0),
+            0.0,
+        )
+    };
+    let fast = at(100.0);
+    let parry = DefaultQueryDispatcher
+        .cast_shapes_nonlinear(&fast, &sq, &m2, &wall, 0.0, dt, false)
+        .unwrap();
+    let hit = d
+        .cast_shapes_nonlinear(&fast, &sq, &m2, &wall, 0.0, dt, false)
+        .unwrap()
+        .expect("a hit");
+    println!(
+        "rounded square 1e-3 into a wall at 100 m/s: parry's hit at {:?}, the dispatcher's at {:.3e} s",
+        parry.map(|h| h.time_of_impact),
+        hit.time_of_impact
+    );
+    // From 1e-3 to 0.25 · min(0.025, square) = 0.00625 deep at 100 m/s.
+    assert!((hit.time_of_impact - 5.25e-5).abs() < 1e-12, "{}", hit.time_of_impact);
+    let deeper = signed_at(&d, &fast, &sq, &m2, &wall, hit.time_of_impact);
+    assert!((deeper + 0.00625).abs() < 1e-9, "{deeper}");
+    // Slow (0.1 m/s: 0.0017 over the step) or leaving: no hit.
+    for v in [0.1, -100.0] {
+        assert!(d
+            .cast_shapes_nonlinear(&at(v), &sq, &m2, &wall, 0.0, dt, false)
+            .unwrap()
+            .is_none());
+    }
+    // Stopping at penetration: parry's answer, unchanged.
+    let stop = d.cast_shapes_nonlinear(&fast, &sq, &m2, &wall, 0.0, dt, true).unwrap();
+    let parry_stop = DefaultQueryDispatcher
+        .cast_shapes_nonlinear(&fast, &sq, &m2, &wall, 0.0, dt, true)
+        .unwrap();
+    assert_eq!(stop.map(|h| h.time_of_impact), parry_stop.map(|h| h.time_of_impact));
+}
+
+/// Where rapier's CCD clamped a rounded heptagon flying at a box wall (zero spin, a flat side
+/// parallel to the wall's face, 8.2e-11 away; recorded from `examples/wall_shots.rs`), parry's
+/// support-map contact and contact manifold come back empty although parry's own distance is
+/// 8.2e-11 (GJK/EPA give up on the nearly touching parallel faces); rapier's solver then gets no
+/// contact and the next step's cast answers the start time (rapier discards it) or nothing: the
+/// heptagon passed through the wall in 3 of 100 shots. The dispatcher
+/// computes the contact on the shapes pushed 10⁻⁸ of their size into each other and measures the
+/// distance at the true pose; the manifold and the cast see the wall.
+#[test]
+fn nearly_touching_polygonal_pair_is_not_lost_to_parrys_gjk() {
+    let d = SmoothDispatcher::default();
+    let wall = Cuboid::new(Vector::new(0.025, 3.0));
+    let hept = RoundedPolygon::regular(7, 0.4, 0.06);
+    let pos12 = Pose::from_parts(
+        Vector::new(-0.48259960463207285, 0.0),
+        Rotation::from_cos_sin_unchecked(-0.848100031710408, -0.5298361409084934),
+    );
+    let gap = DefaultQueryDispatcher.distance(&pos12, &wall, &hept).unwrap().distance;
+    let parry = DefaultQueryDispatcher.contact(&pos12, &wall, &hept, 0.02).unwrap();
+    let mut parry_manifold = ContactManifold::<(), ()>::new();
+    DefaultQueryDispatcher
+        .contact_manifold_convex_convex(&pos12, &wall, &hept, None, None, 0.02, &mut parry_manifold)
+        .unwrap();
+    println!(
+        "nearly touching heptagon: parry's distance {gap:.3e}, parry's contact {:?}, parry's manifold {} points",
+        parry.map(|c| c.dist),
+        parry_manifold.points.len()
+    );
+    let c = d.contact(&pos12, &wall, &hept, 0.02).unwrap().expect("a contact");
+    assert!((c.dist - gap).abs() < 1e-12, "{} vs {gap}", c.dist);
+    assert!((c.normal1 + Vector::X).length() < 1e-9, "{}", c.normal1);
+    for (g1, g2, pose) in [
+        (&wall as &dyn Shape, &hept as &dyn Shape, pos12),
+        (&hept, &wall, pos12.inverse()),
+    ] {
+        let mut manifolds: Vec<ContactManifold<(), ()>> = Vec::new();
+        d.contact_manifolds(&pose, g1, g2, 0.02, &mut manifolds, &mut None)
+            .unwrap();
+        let points: Vec<f64> = manifolds.iter().flat_map(|m| m.points.iter().map(|p| p.dist)).collect();
+        assert!(!points.is_empty(), "no contact point");
+        assert!(points.iter().all(|&p| (p - gap).abs() < 1e-9 || p > gap), "{points:?}");
+    }
+    // rapier's CCD of the next step: the heptagon flying on at 200 m/s.
+    let m1 = NonlinearRigidMotion::new(pos12, Vector::ZERO, Vector::new(200.0, 0.0), 0.0);
+    let m2 = NonlinearRigidMotion::constant_position(Pose::IDENTITY);
+    let dt = 1.0 / 60.0;
+    let parry = DefaultQueryDispatcher
+        .cast_shapes_nonlinear(&m1, &hept, &m2, &wall, 0.0, dt, false)
+        .unwrap();
+    let hit = d
+        .cast_shapes_nonlinear(&m1, &hept, &m2, &wall, 0.0, dt, false)
+        .unwrap()
+        .expect("the wall");
+    println!(
+        "  next step's cast: parry {:?}, the dispatcher {:.3e} s",
+        parry.map(|h| h.time_of_impact),
+        hit.time_of_impact
+    );
+    // Stopped where it is 0.25·0.025 = 0.00625 deep: 3.125e-5 s at 200 m/s.
+    assert!((hit.time_of_impact - 3.125e-5).abs() < 1e-9, "{}", hit.time_of_impact);
 }
 
 #[test]

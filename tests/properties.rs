@@ -103,14 +103,16 @@ proptest! {
         b in prop_oneof![Just(f64::NAN), Just(f64::NEG_INFINITY), Just(-0.5), 1e-300f64..1e300],
         n in 0usize..12,
     ) {
+        // Lengths must be finite, positive and within [MIN_LENGTH, MAX_LENGTH].
+        let ok = |x: f64| (smooth_ccd2d::error::MIN_LENGTH..=smooth_ccd2d::error::MAX_LENGTH).contains(&x);
         let e = Ellipse::try_new(a, b);
-        prop_assert_eq!(e.is_ok(), a.is_finite() && a > 0.0 && b.is_finite() && b > 0.0);
+        prop_assert_eq!(e.is_ok(), ok(a) && ok(b));
         let p = RoundedPolygon::try_regular(n, a, b.abs());
         if p.is_ok() {
-            prop_assert!(n >= 3 && a.is_finite() && a > 0.0);
+            prop_assert!(n >= 3 && ok(a));
         }
         let c = smooth_ccd2d::CapsuleEllipse::try_new(a, b, 1.0);
-        prop_assert_eq!(c.is_ok(), a.is_finite() && a > 0.0 && b.is_finite() && b > 0.0);
+        prop_assert_eq!(c.is_ok(), ok(a) && ok(b));
     }
 }
 

@@ -7,6 +7,8 @@ use parry2d_f64::query::{DefaultQueryDispatcher, QueryDispatcher, ShapeCastHit};
 use parry2d_f64::shape::{Ball, Shape};
 use smooth_ccd2d::SmoothDispatcher;
 
+pub mod pile;
+
 /// Scenarios per class in a batch.
 pub const BATCH: usize = 200;
 
@@ -95,5 +97,107 @@ pub fn judge(answer: Option<f64>, rf: &crate::common::RefToi, size: f64, window:
             Some(a) => (a - time).abs() <= 1e-6 * window + 1e-9 * size / rf.slope.abs().max(1e-300),
             None => false,
         }),
+    }
+}
+
+/// Timing helpers shared by the table-printing benchmark: every measurement repeats the query
+/// until it lasts at least `MIN_TIMING`, and a time is the minimum over `ROUNDS` rounds that
+/// alternate between the two contenders (robust against interference from other processes).
+pub mod timing {
+    use std::time::{Duration, Instant};
+
+    /// The shortest timed batch.
+    pub const MIN_TIMING: Duration = Duration::from_micros(200);
+    /// Rounds per measurement.
+    pub const ROUNDS: usize = 5;
+
+    /// Repetitions of `f` that take at least `MIN_TIMING`.
+    pub fn calibrate(f: &mut dyn FnMut()) -> u32 {
+        let mut reps = 1u32;
+        loop {
+            let start = Instant::now();
+            for _ in 0..reps {
+                f();
+            }
+            let el = start.elapsed();
+            if el >= MIN_TIMING {
+                return reps;
+            }
+            let want = (MIN_TIMING.as_secs_f64() / el.as_secs_f64().max(1e-9) * 1.2).ceil();
+            reps = (want as u32).clamp(reps.saturating_mul(2), reps.saturating_mul(100).max(2));
+        }
+    }
+
+    /// Seconds per call of `f`, repeated `reps` times.
+    pub fn time_once(f: &mut dyn FnMut(), reps: u32) -> f64 {
+        let start = Instant::now();
+        for _ in 0..reps {
+            f();
+        }
+        start.elapsed().as_secs_f64() / reps as f64
+    }
+
+    /// Seconds per call of `f` alone (minimum over `ROUNDS`).
+    pub fn time_one(f: &mut dyn FnMut()) -> f64 {
+        let reps = calibrate(f);
+        (0..ROUNDS).map(|_| time_once(f, reps)).fold(f64::INFINITY, f64::min)
+    }
+
+    /// Per-call seconds of `a` and `b` (minimum over `ROUNDS` alternating rounds).
+    pub fn time_pair(a: &mut dyn FnMut(), b: &mut dyn FnMut()) -> (f64, f64) {
+        let (ra, rb) = (calibrate(a), calibrate(b));
+        let (mut ta, mut tb) = (f64::INFINITY, f64::INFINITY);
+        for round in 0..ROUNDS {
+            if round % 2 == 0 {
+                ta = ta.min(time_once(a, ra));
+                tb = tb.min(time_once(b, rb));
+            } else {
+                tb = tb.min(time_once(b, rb));
+                ta = ta.min(time_once(a, ra));
+            }
+        }
+        (ta, tb)
+    }
+
+    /// The q-quantile (nearest rank) of `v`; NaN for an empty slice.
+    pub fn quantile(v: &[f64], q: f64) -> f64 {
+        if v.is_empty() {
+            return f64::NAN;
+        }
+        let mut s = v.to_vec();
+        s.sort_by(f64::total_cmp);
+        let i = ((q * s.len() as f64).ceil() as usize).clamp(1, s.len()) - 1;
+        s[i]
+    }
+}
+
+/// The polygon whose vertices are the support points of `n` evenly spread directions: inscribed
+/// in the curve, parry's polygonal stand-in for a smooth shape.
+pub fn polygon_approximation(c: &dyn smooth_ccd2d::ConvexCurve, n: usize) -> parry2d_f64::shape::ConvexPolygon {
+    let pts: Vec<parry2d_f64::math::Vector> = (0..n)
+        .map(|k| {
+            let a = core::f64::consts::TAU * k as f64 / n as f64;
+            c.support_point(parry2d_f64::math::Vector::new(a.cos(), a.sin()))
+        })
+        .collect();
+    parry2d_f64::shape::ConvexPolygon::from_convex_hull(&pts).expect("a non-degenerate polygon")
+}
+
+/// Vertices of the polygon approximations of smooth shapes.
+pub const POLYGON_VERTICES: usize = 64;
+
+/// A test shape as a shape parry's own dispatcher builds manifolds for: a smooth shape becomes its
+/// `POLYGON_VERTICES`-gon approximation, a rounded polygon parry's `RoundConvexPolygon` (exact), a
+/// disc parry's `Ball`.
+pub fn parry_polygonal(t: &TestShape) -> Box<dyn Shape> {
+    match t {
+        TestShape::Ellipse(e) => Box::new(polygon_approximation(e, POLYGON_VERTICES)),
+        TestShape::Ball(b) => Box::new(Ball::new(b.radius)),
+        TestShape::RoundedPolygon(p) => match p.to_parry() {
+            Some(r) if p.corner_radius() > 0.0 => Box::new(r),
+            Some(r) => Box::new(r.inner_shape),
+            None => Box::new(polygon_approximation(p, POLYGON_VERTICES)),
+        },
+        TestShape::CapsuleEllipse(c) => Box::new(polygon_approximation(c, POLYGON_VERTICES)),
     }
 }

@@ -79,9 +79,17 @@ impl Scene {
     }
 }
 
-/// The output folder: the first command-line argument, or `target/examples-out`; created.
+/// The output folder: the first command-line argument, or `target/examples-out` under the crate's
+/// root (wherever the example is run from); created.
 pub fn out_dir() -> PathBuf {
-    let dir = PathBuf::from(std::env::args().nth(1).unwrap_or_else(|| "target/examples-out".into()));
+    let dir = std::env::args().nth(1).map_or_else(
+        || {
+            PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+                .join("target")
+                .join("examples-out")
+        },
+        PathBuf::from,
+    );
     std::fs::create_dir_all(&dir).unwrap_or_else(|e| panic!("cannot create {}: {e}", dir.display()));
     dir
 }

@@ -1,0 +1,198 @@
+//! Guards around the queries [`crate::SmoothDispatcher`] hands to parry's
+//! `DefaultQueryDispatcher` (pairs with no strictly convex side, parry's own pairs, shapes a
+//! curve could not be built from).
+//!
+//! parry asserts that margins are non-negative (`closest_points` of two balls, of a half-space),
+//! asserts inside GJK that support points are finite, and otherwise passes NaN and infinities
+//! through to its answers. The dispatcher answers `Err(Unsupported)` instead, so that no query
+//! through it panics on bad numbers or returns a non-finite value:
+//!
+//! * before parry runs: `pos12` not finite, beyond ±1e100, or its rotation not a unit complex
+//!   number (to 1e-6), a shape whose local bounding box is not finite, beyond ±1e100 or inverted
+//!   (a negative size), or a margin (prediction, `max_dist`) that is negative or NaN;
+//! * after: any non-finite number in parry's answer.
+
+use crate::math::{Pose, Real};
+use parry2d_f64::query::{
+    ClosestPoints, Contact, ContactManifold, NonlinearRigidMotion, ShapeCastHit, ShapeDistance, ShapeIntersection,
+    Unsupported,
+};
+use parry2d_f64::shape::Shape;
+
+/// The largest coordinate (of a pose's translation, of a shape's bounding box) handed to parry:
+/// its GJK squares and sums coordinates, and asserts that the results are finite.
+pub(crate) const PARRY_MAX_COORDINATE: Real = 1e100;
+
+/// A pose parry can use: finite, within ±[`PARRY_MAX_COORDINATE`], with a unit rotation (to
+/// 1e-6).
+pub(crate) fn pose_ok(p: &Pose) -> bool {
+    let r = p.rotation;
+    p.is_finite()
+        && p.translation.x.abs().max(p.translation.y.abs()) <= PARRY_MAX_COORDINATE
+        && ((r.re * r.re + r.im * r.im) - 1.0).abs() <= 1e-6
+}
+
+/// Shapes parry can use: local bounding boxes finite, within ±[`PARRY_MAX_COORDINATE`] (a
+/// half-space's is a placeholder and is not checked) and not inverted (a parry shape built with
+/// a negative size has `mins > maxs`, and a negative `ccd_thickness` that makes parry's
+/// nonlinear cast walk backwards for ever).
+pub(crate) fn shapes_ok(g1: &dyn Shape, g2: &dyn Shape) -> bool {
+    let ok = |g: &dyn Shape| {
+        if let Some(hs) = g.as_shape::<parry2d_f64::shape::HalfSpace>() {
+            return hs.normal.is_finite();
+        }
+        let a = g.compute_local_aabb();
+        let m = a.mins.abs().max(a.maxs.abs());
+        a.mins.is_finite()
+            && a.maxs.is_finite()
+            && m.x.max(m.y) <= PARRY_MAX_COORDINATE
+            && a.mins.x <= a.maxs.x
+            && a.mins.y <= a.maxs.y
+    };
+    ok(g1) && ok(g2)
+}
+
+/// Answers parry gives that hold only finite numbers.
+pub(crate) trait AllFinite {
+    /// Whether every number in the answer is finite.
+    fn all_finite(&self) -> bool;
+}
+
+impl AllFinite for ShapeIntersection {
+    fn all_finite(&self) -> bool {
+        true
+    }
+}
+
+impl AllFinite for ShapeDistance {
+    fn all_finite(&self) -> bool {
+        self.distance.is_finite()
+    }
+}
+
+impl AllFinite for Contact {
+    fn all_finite(&self) -> bool {
+        self.dist.is_finite()
+            && self.point1.is_finite()
+            && self.point2.is_finite()
+            && self.normal1.is_finite()
+            && self.normal2.is_finite()
+    }
+}
+
+impl AllFinite for ClosestPoints {
+    fn all_finite(&self) -> bool {
+        match self {
+            ClosestPoints::WithinMargin(a, b) => a.is_finite() && b.is_finite(),
+            _ => true,
+        }
+    }
+}
+
+impl AllFinite for ShapeCastHit {
+    fn all_finite(&self) -> bool {
+        self.time_of_impact.is_finite()
+            && self.witness1.is_finite()
+            && self.witness2.is_finite()
+            && self.normal1.is_finite()
+            && self.normal2.is_finite()
+    }
+}
+
+impl<M, C> AllFinite for ContactManifold<M, C> {
+    fn all_finite(&self) -> bool {
+        (self.points.is_empty() || (self.local_n1.is_finite() && self.local_n2.is_finite()))
+            && self
+                .points
+                .iter()
+                .all(|c| c.local_p1.is_finite() && c.local_p2.is_finite() && c.dist.is_finite())
+    }
+}
+
+impl<T: AllFinite> AllFinite for Option<T> {
+    fn all_finite(&self) -> bool {
+        self.as_ref().is_none_or(T::all_finite)
+    }
+}
+
+/// Runs parry's `query` on `(pos12, g1, g2)` with `margin` (0 when the query has none) under
+/// the guards of the module docs.
+pub(crate) fn parry<T: AllFinite>(
+    pos12: &Pose,
+    g1: &dyn Shape,
+    g2: &dyn Shape,
+    margin: Real,
+    query: impl FnOnce() -> Result<T, Unsupported>,
+) -> Result<T, Unsupported> {
+    if !(margin >= 0.0 && pose_ok(pos12) && shapes_ok(g1, g2)) {
+        return Err(Unsupported);
+    }
+    let r = query()?;
+    if r.all_finite() {
+        Ok(r)
+    } else {
+        Err(Unsupported)
+    }
+}
+
+/// `r`, or `Unsupported` when it holds a non-finite number.
+pub(crate) fn finite<T: AllFinite>(r: Result<T, Unsupported>) -> Result<T, Unsupported> {
+    match r {
+        Ok(v) if !v.all_finite() => Err(Unsupported),
+        r => r,
+    }
+}
+
+/// The guards of a nonlinear cast handed to parry (`parry_cast_nonlinear`, and the composite
+/// helper, which casts bounding balls itself): `Unsupported` for non-finite motions or times,
+/// poses and shapes refused by [`pose_ok`] and [`shapes_ok`], positions leaving the range within
+/// the window, and windows parry would need more than [`super::PARRY_MAX_STEPS`] steps, turns
+/// or travels to cross; `Ok(false)` for a reversed window (no hit); `Ok(true)` to go on.
+pub(crate) fn cast_window_ok(
+    m1: &NonlinearRigidMotion,
+    g1: &dyn Shape,
+    m2: &NonlinearRigidMotion,
+    g2: &dyn Shape,
+    t0: Real,
+    t1: Real,
+) -> Result<bool, Unsupported> {
+    let finite = |m: &NonlinearRigidMotion| {
+        m.start.is_finite() && m.local_center.is_finite() && m.linvel.is_finite() && m.angvel.is_finite()
+    };
+    if !(finite(m1) && finite(m2) && t0.is_finite() && t1.is_finite()) {
+        return Err(Unsupported);
+    }
+    if !(pose_ok(&m1.start) && pose_ok(&m2.start) && shapes_ok(g1, g2)) {
+        return Err(Unsupported);
+    }
+    if t1 < t0 {
+        return Ok(false);
+    }
+    // Motions that leave f64's range within the window (1e300 m/s for 1e300 s) have no poses.
+    let poses_ok = |t: Real| pose_ok(&m1.position_at_time(t)) && pose_ok(&m2.position_at_time(t));
+    if !(poses_ok(t0) && poses_ok(t1)) {
+        return Err(Unsupported);
+    }
+    if t1 > t0 {
+        let inv = |x: Real| if x == 0.0 { 0.0 } else { 1.0 / x };
+        let lin = (g1.ccd_thickness() + g2.ccd_thickness()) * inv((m2.linvel - m1.linvel).length());
+        let max_ang = g1.ccd_angular_thickness().max(g2.ccd_angular_thickness());
+        let ang = (core::f64::consts::PI - max_ang) * inv((m2.angvel - m1.angvel).abs());
+        let step = ang.min(lin).min((t1 - t0) / 10.0);
+        // A negative step (a shape with a negative size, an angular thickness above π) walks
+        // backwards for ever.
+        let few_steps = (t1 - t0) / step <= super::PARRY_MAX_STEPS;
+        if step < 0.0 || (step != 0.0 && !few_steps) {
+            return Err(Unsupported);
+        }
+        // parry's conservative advancement (no contact at the start) takes steps of about the
+        // distance over the approach speed: bound the relative turns and the travel in sizes.
+        let size = g1.compute_local_bounding_sphere().radius + g2.compute_local_bounding_sphere().radius;
+        let turns = (m2.angvel - m1.angvel).abs() * (t1 - t0) / core::f64::consts::TAU;
+        let travel = (m2.linvel - m1.linvel).length() * (t1 - t0) / size;
+        if !(turns <= super::PARRY_MAX_STEPS && (travel <= super::PARRY_MAX_STEPS || size.is_nan())) {
+            return Err(Unsupported);
+        }
+    }
+    Ok(true)
+}
