@@ -46,7 +46,7 @@ use crate::curve::ConvexCurve;
 use crate::halfspace::{halfspace_distance, time_of_impact_halfspace};
 use crate::math::{Pose, Real, Vector};
 use crate::stationary::{stationary_distance, DistanceOptions, QueryError, StationaryDistance};
-use crate::toi::{time_of_impact, TimeOfImpact, ToiOptions};
+use crate::toi::{bounding_circles_part, time_of_impact, TimeOfImpact, ToiOptions};
 use crate::{BallCurve, CapsuleEllipse, CustomCurve, Ellipse, RoundedPolygon};
 use parry2d_f64::query::details::ShapeCastOptions;
 use parry2d_f64::query::{
@@ -875,7 +875,11 @@ impl QueryDispatcher for SmoothDispatcher {
                 };
                 // time_of_impact takes the shapes in the caller's order (it swaps roles itself).
                 let (a, b) = if swapped { (&c2, &c1) } else { (&c1, &c2) };
-                let r = time_of_impact(a.get(), &m1, b.get(), &m2, 0.0, options.max_time_of_impact, &opts);
+                let (t1, delta) = (options.max_time_of_impact, options.target_distance);
+                if bounding_circles_part(a.get(), &m1, b.get(), &m2, 0.0, t1, delta) {
+                    return Ok(None);
+                }
+                let r = time_of_impact(a.get(), &m1, b.get(), &m2, 0.0, t1, &opts);
                 toi_to_parry(r.map(Some))
             }
             Route::Composite => guard::parry(pos12, g1, g2, 0.0, || {
@@ -905,6 +909,19 @@ impl QueryDispatcher for SmoothDispatcher {
         match route(g1, g2) {
             Route::Curves { c1, c2, swapped } => {
                 let (a, b) = if swapped { (&c2, &c1) } else { (&c1, &c2) };
+                // The specification's inexpensive test first: circles that never meet, no impact
+                // (and no contact at the start for the rapier rule below).
+                if bounding_circles_part(
+                    a.get(),
+                    motion1,
+                    b.get(),
+                    motion2,
+                    start_time,
+                    end_time,
+                    opts.target_distance,
+                ) {
+                    return Ok(None);
+                }
                 let thickness = g1.ccd_thickness().min(g2.ccd_thickness());
                 let r = time_of_impact(a.get(), motion1, b.get(), motion2, start_time, end_time, &opts);
                 if stop_at_penetration {

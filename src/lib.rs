@@ -55,4 +55,7 @@ pub use error::ShapeError;
 pub use jet::{Dual2, Jet2, JetVec};
 pub use rounded_polygon::RoundedPolygon;
 pub use stationary::{stationary_distance, DistanceOptions, DistanceStatus, QueryError, StationaryDistance};
-pub use toi::{time_of_impact, time_of_impact_traced, TimeOfImpact, ToiCost, ToiOptions, ToiStatus, TraceEvent};
+pub use toi::{
+    bounding_circles_part, time_of_impact, time_of_impact_traced, TimeOfImpact, ToiCost, ToiOptions, ToiStatus,
+    TraceEvent,
+};

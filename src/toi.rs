@@ -437,17 +437,12 @@ impl<'a> Tracker<'a> {
 
     /// True when the bounding circles about the rotation centres stay apart on [t, t1].
     fn parted_for_rest(&self, t: f64) -> bool {
-        let p = self.rel.center_offset(t);
-        let v = self.rel.center_velocity();
-        let span = self.t1 - t;
-        // min over s ∈ [0, span] of |p + v s|.
-        let vv = v.length_squared();
-        let s = if vv > 0.0 {
-            (-p.dot(v) / vv).clamp(0.0, span)
-        } else {
-            0.0
-        };
-        (p + v * s).length() > self.reach * (1.0 + 1e-12)
+        circles_stay_apart(
+            self.rel.center_offset(t),
+            self.rel.center_velocity(),
+            self.t1 - t,
+            self.reach,
+        )
     }
 
     /// The guard's bound on [t, t + h] (module docs): the axis turns at λ in the world, and
@@ -1037,6 +1032,56 @@ impl<'a> Tracker<'a> {
     }
 }
 
+/// Whether two circles whose centres are `offset` apart and move apart at the relative velocity
+/// `velocity` stay farther apart than `reach` (the sum of their radii plus the target distance)
+/// for a time `span`: min over s ∈ [0, span] of |offset + velocity·s| > reach (with a relative
+/// margin of 1e-12 against rounding). False for NaN input.
+#[inline]
+fn circles_stay_apart(offset: Vector, velocity: Vector, span: f64, reach: f64) -> bool {
+    let vv = velocity.length_squared();
+    let s = if vv > 0.0 {
+        (-offset.dot(velocity) / vv).clamp(0.0, span.max(0.0))
+    } else {
+        0.0
+    };
+    (offset + velocity * s).length() > reach * (1.0 + 1e-12)
+}
+
+/// The specification's inexpensive test ("Algorithm usage"): true when the bounding circles of
+/// the two shapes — each about its rotation centre (`local_center`), with radius the shape's
+/// bounding radius plus the centre's distance from the local origin — stay farther apart than
+/// `target_distance` throughout `[start_time, end_time]`. No impact is then possible, and
+/// [`time_of_impact`] would answer [`ToiStatus::NoHit`]; callers that need no witnesses for a
+/// miss (parry's casts report none) can skip the query. The circles move with the rotation
+/// centres, whose relative motion is linear, so the test is the closest approach of two points.
+///
+/// False whenever anything is non-finite or the window is reversed: the query itself then
+/// reports the error.
+pub fn bounding_circles_part(
+    shape1: &dyn ConvexCurve,
+    motion1: &NonlinearRigidMotion,
+    shape2: &dyn ConvexCurve,
+    motion2: &NonlinearRigidMotion,
+    start_time: f64,
+    end_time: f64,
+    target_distance: f64,
+) -> bool {
+    if !(motion_is_finite(motion1) && motion_is_finite(motion2) && start_time <= end_time) {
+        return false;
+    }
+    let reach = shape1.bounding_radius()
+        + motion1.local_center.length()
+        + shape2.bounding_radius()
+        + motion2.local_center.length()
+        + target_distance;
+    if !(reach.is_finite() && target_distance >= 0.0 && (end_time - start_time).is_finite()) {
+        return false;
+    }
+    let centre = |m: &NonlinearRigidMotion| m.start * m.local_center + m.linvel * start_time;
+    let offset = centre(motion1) - centre(motion2);
+    circles_stay_apart(offset, motion1.linvel - motion2.linvel, end_time - start_time, reach)
+}
+
 /// The largest h with gap + slope·h − M h²/2 ≥ 0 (the guard; infinite when M = 0 ≤ slope).
 #[inline]
 fn guard_step(gap: f64, slope: f64, m: f64) -> f64 {
@@ -1237,6 +1282,75 @@ mod tests {
         let m2 = still(0.0, 0.0, 0.3);
         let r = time_of_impact(&a, &m1, &b, &m2, 0.0, 1.0, &ToiOptions::default()).unwrap();
         assert_eq!(r.status, ToiStatus::NoHit);
+    }
+
+    #[test]
+    fn bounding_circles_part_only_when_no_impact_is_possible() {
+        // Closed form: unit discs 10 apart closing at speed 1 come within 2 (touch) at t = 8.
+        let disc = BallCurve { radius: 1.0 };
+        let at = |x: f64, v: f64| {
+            NonlinearRigidMotion::new(
+                Pose::new(Vector::new(x, 0.0), 0.0),
+                Vector::ZERO,
+                Vector::new(v, 0.0),
+                0.0,
+            )
+        };
+        let (m1, m2) = (at(0.0, 0.0), at(10.0, -1.0));
+        assert!(bounding_circles_part(&disc, &m1, &disc, &m2, 0.0, 7.9, 0.0));
+        assert!(!bounding_circles_part(&disc, &m1, &disc, &m2, 0.0, 8.1, 0.0));
+        assert!(
+            !bounding_circles_part(&disc, &m1, &disc, &m2, 0.0, 7.9, 0.2),
+            "target counts"
+        );
+        assert!(
+            !bounding_circles_part(&disc, &m1, &disc, &m2, 1.0, 0.0, 0.0),
+            "reversed window"
+        );
+        assert!(
+            !bounding_circles_part(&disc, &m1, &disc, &m2, 0.0, f64::NAN, 0.0),
+            "NaN window"
+        );
+        // Random pairs: whenever the circles part, the full query finds no impact either.
+        let shapes: Vec<Box<dyn ConvexCurve>> = vec![
+            Box::new(Ellipse::new(1.0, 0.05)),
+            Box::new(Ellipse::new(0.3, 0.7)),
+            Box::new(BallCurve { radius: 0.4 }),
+            Box::new(RoundedPolygon::regular(5, 0.8, 0.1)),
+        ];
+        let mut rng = Lcg(11);
+        let (mut parted, mut cases) = (0, 0);
+        for case in 0..2000 {
+            let o1 = &*shapes[case % shapes.len()];
+            let o2 = &*shapes[(case / shapes.len()) % 3];
+            let motion = |rng: &mut Lcg| {
+                NonlinearRigidMotion::new(
+                    Pose::new(
+                        Vector::new(rng.range(-4.0, 4.0), rng.range(-4.0, 4.0)),
+                        rng.range(-3.0, 3.0),
+                    ),
+                    Vector::new(rng.range(-0.2, 0.2), rng.range(-0.2, 0.2)),
+                    Vector::new(rng.range(-4.0, 4.0), rng.range(-4.0, 4.0)),
+                    rng.range(-20.0, 20.0),
+                )
+            };
+            let (m1, m2) = (motion(&mut rng), motion(&mut rng));
+            let target = rng.range(0.0, 0.1);
+            let o = ToiOptions {
+                target_distance: target,
+                ..ToiOptions::default()
+            };
+            let Ok(r) = time_of_impact(o1, &m1, o2, &m2, 0.0, 1.0, &o) else {
+                continue;
+            };
+            cases += 1;
+            if bounding_circles_part(o1, &m1, o2, &m2, 0.0, 1.0, target) {
+                parted += 1;
+                assert_eq!(r.status, ToiStatus::NoHit, "case {case}");
+                assert!(r.distance > target);
+            }
+        }
+        assert!(parted > 200 && parted < cases - 200, "{parted} of {cases} parted");
     }
 
     #[test]
