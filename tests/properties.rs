@@ -3,6 +3,7 @@
 use parry2d_f64::math::{Pose, Vector};
 use parry2d_f64::query::NonlinearRigidMotion;
 use proptest::prelude::*;
+use proptest::test_runner::{TestCaseError, TestRunner};
 use smooth_ccd2d::{
     stationary_distance, time_of_impact, ConvexCurve, DistanceOptions, Ellipse, RoundedPolygon, ToiOptions, ToiStatus,
 };
@@ -26,83 +27,132 @@ fn gap_along(o1: &dyn ConvexCurve, o2: &dyn ConvexCurve, pos12: &Pose, th: f64) 
     p2.dot(n) - h1
 }
 
-static DIST_CASES: AtomicUsize = AtomicUsize::new(0);
-static TOI_CASES: AtomicUsize = AtomicUsize::new(0);
-
-proptest! {
-    #![proptest_config(ProptestConfig { cases: CASES, failure_persistence: None, ..ProptestConfig::default() })]
-
-    /// The stationary distance is the maximum of the separating-axis gap: no sampled axis beats it.
-    #[test]
-    fn stationary_distance_is_the_largest_gap_over_all_axes(
-        kind1 in 0u8..3, log_scale in -2.0f64..2.0, ratio in 0.01f64..1.0, sides in 3usize..9, r in 0.0f64..0.3,
-        ratio2 in 0.05f64..1.0, dist in 0.0f64..2.5, dir in -3.2f64..3.2, angle in -3.2f64..3.2,
-    ) {
-        let s = 10f64.powf(log_scale);
-        let o1 = shape(kind1, s, ratio, sides, r);
-        let o2 = Ellipse::new(s * 0.8, s * 0.8 * ratio2);
-        let reach = o1.bounding_radius() + o2.bounding_radius();
-        let pos12 = Pose::new(Vector::new(dir.cos(), dir.sin()) * (dist * reach), angle);
-        let d = stationary_distance(&*o1, &o2, &pos12, &DistanceOptions::default()).unwrap();
-        prop_assert!(d.distance.is_finite());
-        let size = reach;
-        for k in 0..720 {
-            let th = -std::f64::consts::PI + std::f64::consts::TAU * k as f64 / 720.0;
-            prop_assert!(gap_along(&*o1, &o2, &pos12, th) <= d.distance + 1e-9 * size);
-        }
-        // The witnesses realise it.
-        let w2 = pos12 * d.point2;
-        prop_assert!(((w2 - d.point1).dot(d.normal1) - d.distance).abs() <= 1e-9 * size);
-        DIST_CASES.fetch_add(1, Ordering::Relaxed);
+/// Runs `CASES` cases of `strategy` through `test` and prints how many ran (all of them, or the
+/// test fails with proptest's minimal failing input).
+fn run_property<S: Strategy>(name: &str, strategy: S, test: impl Fn(S::Value) -> Result<(), TestCaseError>) {
+    let mut runner = TestRunner::new(ProptestConfig {
+        cases: CASES,
+        failure_persistence: None,
+        ..ProptestConfig::default()
+    });
+    let ran = AtomicUsize::new(0);
+    let result = runner.run(&strategy, |v| {
+        test(v)?;
+        ran.fetch_add(1, Ordering::Relaxed);
+        Ok(())
+    });
+    if let Err(e) = result {
+        panic!("{name}: {e}");
     }
+    println!("{name}: {} cases passed", ran.load(Ordering::Relaxed));
+}
 
-    /// At a reported impact the distance is at the target, it is positive at earlier sampled
-    /// times, and swapping the shapes gives the same time.
-    #[test]
-    fn impacts_are_on_target_first_and_symmetric(
-        kind1 in 0u8..3, log_scale in -2.0f64..2.0, ratio in 0.01f64..1.0, sides in 3usize..9, r in 0.0f64..0.3,
-        ratio2 in 0.05f64..1.0, dir in -3.2f64..3.2, a1 in -3.2f64..3.2, w1 in -60.0f64..60.0, w2 in -10.0f64..10.0,
-        speed in 0.5f64..6.0, aim in -1.0f64..1.0,
-    ) {
-        let s = 10f64.powf(log_scale);
-        let o1 = shape(kind1, s, ratio, sides, r);
-        let o2 = Ellipse::new(s * 0.8, s * 0.8 * ratio2);
-        let reach = o1.bounding_radius() + o2.bounding_radius();
-        let start = Vector::new(dir.cos(), dir.sin()) * (1.05 * reach);
-        let toward = (-start).normalize();
-        let v = (toward + Vector::new(-toward.y, toward.x) * aim) * (speed * s);
-        let m1 = NonlinearRigidMotion::new(Pose::new(start, a1), Vector::ZERO, v, w1);
-        let m2 = NonlinearRigidMotion::new(Pose::IDENTITY, Vector::ZERO, Vector::ZERO, w2);
-        let opts = ToiOptions::default();
-        let r1 = time_of_impact(&*o1, &m1, &o2, &m2, 0.0, 1.0, &opts).unwrap();
-        let r2 = time_of_impact(&o2, &m2, &*o1, &m1, 0.0, 1.0, &opts).unwrap();
-        prop_assert_eq!(r1.status, r2.status);
-        let dist_at = |t: f64| {
-            let pos12 = m1.position_at_time(t).inv_mul(&m2.position_at_time(t));
-            stationary_distance(&*o1, &o2, &pos12, &DistanceOptions::default()).unwrap().distance
-        };
-        if r1.status == ToiStatus::Hit {
-            prop_assert!((r1.time - r2.time).abs() <= 1e-9);
-            let d = dist_at(r1.time);
-            prop_assert!(d >= -1e-11 * reach && d <= 1e-9 * reach, "distance at the hit {}", d);
-            for k in 0..50 {
-                prop_assert!(dist_at(r1.time * k as f64 / 50.0) > 0.0);
+/// The stationary distance is the maximum of the separating-axis gap: no sampled axis beats it.
+#[test]
+fn stationary_distance_is_the_largest_gap_over_all_axes() {
+    let strategy = (
+        0u8..3,
+        -2.0f64..2.0,
+        0.01f64..1.0,
+        3usize..9,
+        0.0f64..0.3,
+        0.05f64..1.0,
+        0.0f64..2.5,
+        -3.2f64..3.2,
+        -3.2f64..3.2,
+    );
+    run_property(
+        "stationary distance is the largest gap",
+        strategy,
+        |(kind1, log_scale, ratio, sides, r, ratio2, dist, dir, angle)| {
+            let s = 10f64.powf(log_scale);
+            let o1 = shape(kind1, s, ratio, sides, r);
+            let o2 = Ellipse::new(s * 0.8, s * 0.8 * ratio2);
+            let reach = o1.bounding_radius() + o2.bounding_radius();
+            let pos12 = Pose::new(Vector::new(dir.cos(), dir.sin()) * (dist * reach), angle);
+            let d = stationary_distance(&*o1, &o2, &pos12, &DistanceOptions::default()).unwrap();
+            prop_assert!(d.distance.is_finite());
+            let size = reach;
+            for k in 0..720 {
+                let th = -std::f64::consts::PI + std::f64::consts::TAU * k as f64 / 720.0;
+                prop_assert!(gap_along(&*o1, &o2, &pos12, th) <= d.distance + 1e-9 * size);
             }
-        } else if r1.status == ToiStatus::NoHit {
-            for k in 0..=50 {
-                prop_assert!(dist_at(k as f64 / 50.0) > -1e-9 * reach);
-            }
-        }
-        TOI_CASES.fetch_add(1, Ordering::Relaxed);
-    }
+            // The witnesses realise it.
+            let w2 = pos12 * d.point2;
+            prop_assert!(((w2 - d.point1).dot(d.normal1) - d.distance).abs() <= 1e-9 * size);
+            Ok(())
+        },
+    );
+}
 
-    /// Constructors never panic through `try_*` and never yield a shape from bad numbers.
-    #[test]
-    fn try_constructors_reject_bad_numbers_without_panicking(
-        a in prop_oneof![Just(f64::NAN), Just(f64::INFINITY), Just(-1.0), Just(0.0), 1e-300f64..1e300],
-        b in prop_oneof![Just(f64::NAN), Just(f64::NEG_INFINITY), Just(-0.5), 1e-300f64..1e300],
-        n in 0usize..12,
-    ) {
+/// At a reported impact the distance is at the target, it is positive at earlier sampled
+/// times, and swapping the shapes gives the same time.
+#[test]
+fn impacts_are_on_target_first_and_symmetric() {
+    let shapes = (0u8..3, -2.0f64..2.0, 0.01f64..1.0, 3usize..9, 0.0f64..0.3, 0.05f64..1.0);
+    let motions = (
+        -3.2f64..3.2,
+        -3.2f64..3.2,
+        -60.0f64..60.0,
+        -10.0f64..10.0,
+        0.5f64..6.0,
+        -1.0f64..1.0,
+    );
+    run_property(
+        "impacts are on target, first and symmetric",
+        (shapes, motions),
+        |((kind1, log_scale, ratio, sides, r, ratio2), (dir, a1, w1, w2, speed, aim))| {
+            let s = 10f64.powf(log_scale);
+            let o1 = shape(kind1, s, ratio, sides, r);
+            let o2 = Ellipse::new(s * 0.8, s * 0.8 * ratio2);
+            let reach = o1.bounding_radius() + o2.bounding_radius();
+            let start = Vector::new(dir.cos(), dir.sin()) * (1.05 * reach);
+            let toward = (-start).normalize();
+            let v = (toward + Vector::new(-toward.y, toward.x) * aim) * (speed * s);
+            let m1 = NonlinearRigidMotion::new(Pose::new(start, a1), Vector::ZERO, v, w1);
+            let m2 = NonlinearRigidMotion::new(Pose::IDENTITY, Vector::ZERO, Vector::ZERO, w2);
+            let opts = ToiOptions::default();
+            let r1 = time_of_impact(&*o1, &m1, &o2, &m2, 0.0, 1.0, &opts).unwrap();
+            let r2 = time_of_impact(&o2, &m2, &*o1, &m1, 0.0, 1.0, &opts).unwrap();
+            prop_assert_eq!(r1.status, r2.status);
+            let dist_at = |t: f64| {
+                let pos12 = m1.position_at_time(t).inv_mul(&m2.position_at_time(t));
+                stationary_distance(&*o1, &o2, &pos12, &DistanceOptions::default())
+                    .unwrap()
+                    .distance
+            };
+            if r1.status == ToiStatus::Hit {
+                prop_assert!((r1.time - r2.time).abs() <= 1e-9);
+                let d = dist_at(r1.time);
+                prop_assert!(d >= -1e-11 * reach && d <= 1e-9 * reach, "distance at the hit {}", d);
+                for k in 0..50 {
+                    prop_assert!(dist_at(r1.time * k as f64 / 50.0) > 0.0);
+                }
+            } else if r1.status == ToiStatus::NoHit {
+                for k in 0..=50 {
+                    prop_assert!(dist_at(k as f64 / 50.0) > -1e-9 * reach);
+                }
+            }
+            Ok(())
+        },
+    );
+}
+
+/// Constructors never panic through `try_*` and never yield a shape from bad numbers.
+#[test]
+fn try_constructors_reject_bad_numbers_without_panicking() {
+    let strategy = (
+        prop_oneof![
+            Just(f64::NAN),
+            Just(f64::INFINITY),
+            Just(-1.0),
+            Just(0.0),
+            1e-300f64..1e300
+        ],
+        prop_oneof![Just(f64::NAN), Just(f64::NEG_INFINITY), Just(-0.5), 1e-300f64..1e300],
+        0usize..12,
+    );
+    run_property("try constructors reject bad numbers", strategy, |(a, b, n)| {
         // Lengths must be finite, positive and within [MIN_LENGTH, MAX_LENGTH].
         let ok = |x: f64| (smooth_ccd2d::error::MIN_LENGTH..=smooth_ccd2d::error::MAX_LENGTH).contains(&x);
         let e = Ellipse::try_new(a, b);
@@ -113,16 +163,6 @@ proptest! {
         }
         let c = smooth_ccd2d::CapsuleEllipse::try_new(a, b, 1.0);
         prop_assert_eq!(c.is_ok(), ok(a) && ok(b));
-    }
-}
-
-#[test]
-fn property_case_counts_are_printed() {
-    // proptest runs exactly CASES cases of each property above unless one fails (then the test
-    // fails with its minimal input). The counters show how many had finished when this ran.
-    println!(
-        "properties: {CASES} cases each (finished so far: distance {}, impact {})",
-        DIST_CASES.load(Ordering::Relaxed),
-        TOI_CASES.load(Ordering::Relaxed)
-    );
+        Ok(())
+    });
 }
