@@ -25,6 +25,11 @@
 //!    can no longer meet before the window ends, or at the window's end. A miss is reported with
 //!    the witnesses corrected to the side tolerance.
 //!
+//! φ is brought back into [−π, π) at every accepted point: left to grow with the turns of the
+//! pair, it would lose the resolution the corrector needs (thin arcs against flat sides turn a
+//! φ error of a few ulps at |φ| ≈ 6e3 into 7e-9·s of distance; `Tracker::rewrap`). The trace
+//! records φ unwrapped.
+//!
 //! ## Why no impact is stepped over (the guard)
 //!
 //! For any unit axis n, the gap G(n, t) between the shapes along n (minus the two support values)
@@ -70,10 +75,11 @@
 // The negated comparisons (`!(x > 0.0)`) are deliberate: they are true for NaN.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-use crate::curve::ConvexCurve;
+use crate::curve::{wrap_phi, ConvexCurve};
 use crate::distances::{eval_pair, PairFrame, PairJet, RelativeMotion};
 use crate::math::Vector;
 use crate::stationary::{stationary_in_frame, DistanceOptions, QueryError, Solver};
+use core::f64::consts::TAU;
 use parry2d_f64::query::NonlinearRigidMotion;
 
 /// The |S| a correction accepts.
@@ -384,6 +390,8 @@ struct Tracker<'a> {
     /// The global bounds on |h''| of each ([`ConvexCurve::support_dd_bound`]).
     h1_global: f64,
     h2_global: f64,
+    /// Whole turns taken out of φ by [`Tracker::rewrap`], to record φ unwrapped in the trace.
+    turns: f64,
     cost: ToiCost,
 }
 
@@ -431,6 +439,7 @@ impl<'a> Tracker<'a> {
             obj1_convex: obj1.is_strictly_convex() && obj1.support_dd_bound().is_finite(),
             h1_global: obj1.support_dd_bound(),
             h2_global: obj2.support_dd_bound(),
+            turns: 0.0,
             cost: ToiCost::default(),
         })
     }
@@ -492,6 +501,46 @@ impl<'a> Tracker<'a> {
             }
         }
         best
+    }
+
+    /// φ of an accepted point brought back into [−π, π) (the whole turns removed are counted
+    /// for the trace, [`Tracker::unwrapped`]).
+    ///
+    /// Why the tracked φ must not grow with the turns of the pair: the corrector can place a root
+    /// only to the spacing of doubles near φ (the bracketed solver stops at 4ε(1 + |φ|)), and an
+    /// error δφ costs about (ρ₁ + ρ₂ + F)·(ω₁δφ)²/2 in F, with ω₁ = dθ/dφ the turn rate of
+    /// object1's normal. Both factors can be huge: a thin `CapsuleEllipse` packs each arc's
+    /// quarter turn of normals into about r1/r2 radians of φ (ω₁ ≈ 3e5 for r1 = 5e-6·r2), and
+    /// the flat side of a 1:3e-5 ellipse has ρ₂ = 1.3e10 ≈ 3e4·s. After 976 relative turns
+    /// (|φ| ≈ 6e3) the best root the corrector could reach was 2.4e-12 from the true one, F
+    /// there was 3.1e-3 = 7e-9·s below the distance, the contact test saw that low value and a
+    /// `Hit` was reported early (`thin_capsule_arc_against_thin_ellipse_hit_is_on_target` in
+    /// `tests/adversarial.rs`). F is a lower bound on the distance at any φ, so the error is
+    /// always on the early side, and only its size depends on |φ|.
+    ///
+    /// Kept in [−π, π) at every accepted point (a step moves φ by a few radians at most: the
+    /// predictor's travel cap plus the corrector's move), φ has the resolution of the stationary
+    /// distance, which starts from [`ConvexCurve::phi_range_of_normal`] in [−π, π) and is itself
+    /// exact to its tolerances: δφ ≤ 4ε(1 + |φ|) ≈ 1e-14 whatever the number of turns, hundreds
+    /// of times finer here, and the loss in F, quadratic in δφ, 1e5 times smaller or more. The
+    /// contact test then reads the distance itself (here the exact distance at the reported time
+    /// is 1.5e-10 = 3.5e-16·s), so the `Hit` meets δ − 1e-12·s ≤ D ≤ δ + tol for the same reason
+    /// a query that starts near that time does. Rewrapping moves φ by the rounding of a multiple
+    /// of 2π (an ulp of φ, which the next correction absorbs) and costs one comparison per
+    /// accepted step.
+    #[inline]
+    fn rewrap(&mut self, phi: f64) -> f64 {
+        let w = wrap_phi(phi);
+        if w != phi {
+            self.turns += ((phi - w) / TAU).round();
+        }
+        w
+    }
+
+    /// φ continued across the whole turns removed by [`Tracker::rewrap`] (for the trace).
+    #[inline]
+    fn unwrapped(&self, phi: f64) -> f64 {
+        phi + self.turns * TAU
     }
 
     fn solver(&self, frame: PairFrame) -> Solver<'a> {
@@ -658,7 +707,11 @@ impl<'a> Tracker<'a> {
         // The first evaluation is the prediction itself; the rest are Halley/bisection steps.
         self.cost.corrector_iterations += sv.evaluations.saturating_sub(1);
         let (phi, j) = r?;
-        trace.push(TraceEvent::Correct { phi, t, side: j.side.v });
+        trace.push(TraceEvent::Correct {
+            phi: self.unwrapped(phi),
+            t,
+            side: j.side.v,
+        });
         Some((phi, j))
     }
 
@@ -695,7 +748,7 @@ impl<'a> Tracker<'a> {
             match self.leave_contact(t, phi, &j)? {
                 Some((t2, phi2, j2)) => {
                     t = t2;
-                    phi = phi2;
+                    phi = self.rewrap(phi2);
                     j = j2;
                 }
                 None => return Ok(self.result(ToiStatus::NoHit, self.t1, &j)),
@@ -795,7 +848,7 @@ impl<'a> Tracker<'a> {
             // its Newton correction joins the Taylor step.
             let phi_pred = phi + resid + h * (dphi + 0.5 * ddphi * h);
             trace.push(TraceEvent::Predict {
-                phi: phi_pred,
+                phi: self.unwrapped(phi_pred),
                 t: t_new,
             });
             let corrected = self.correct(t_new, phi_pred, Tol::Loose, trace);
@@ -846,10 +899,10 @@ impl<'a> Tracker<'a> {
                     // The corrector's root is a local maximum of F; with F > 0 it is the global
                     // one. With F ≤ 0 we are at contact anyway. Its jet is already full.
                     t = t_new;
-                    phi = phi_c;
+                    phi = self.rewrap(phi_c);
                     j = jc;
                     trace.push(TraceEvent::Accept {
-                        phi,
+                        phi: self.unwrapped(phi),
                         t,
                         distance: j.fwd.v,
                     });
@@ -872,7 +925,7 @@ impl<'a> Tracker<'a> {
                 None => {
                     self.cost.backtracks += 1;
                     trace.push(TraceEvent::Backtrack {
-                        phi: phi_pred,
+                        phi: self.unwrapped(phi_pred),
                         t: t_new,
                     });
                     if extended.is_some() {
@@ -888,7 +941,7 @@ impl<'a> Tracker<'a> {
                         let (p2, j2) = self.global_at(t_try, phi_pred, Tol::Fixed(self.side_tol))?;
                         self.cost.predictor_steps += 1;
                         t = t_try;
-                        phi = p2;
+                        phi = self.rewrap(p2);
                         j = j2;
                         h_acc = window * 1e-6;
                     }
@@ -985,7 +1038,10 @@ impl<'a> Tracker<'a> {
                 }
             }
         }
-        trace.push(TraceEvent::Impact { phi: best.1, t: best.0 });
+        trace.push(TraceEvent::Impact {
+            phi: self.unwrapped(best.1),
+            t: best.0,
+        });
         self.result(ToiStatus::Hit, best.0, &best.2)
     }
 
@@ -1018,7 +1074,7 @@ impl<'a> Tracker<'a> {
             let (p2, j2) = self.global_at(t_new, phi, Tol::Fixed(self.side_tol))?;
             self.cost.predictor_steps += 1;
             t = t_new;
-            phi = p2;
+            phi = self.rewrap(p2);
             j = j2;
             if j.fwd.v > delta + self.tol_d {
                 return Ok(Some((t, phi, j)));
