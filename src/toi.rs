@@ -1187,6 +1187,20 @@ mod tests {
         }
     }
 
+    /// A random motion: start within `reach` of the origin at any angle, rotation centre within
+    /// 0.2 of the local origin, speed up to 4·√2, spin up to `spin` rad/s.
+    fn random_motion(rng: &mut Lcg, reach: f64, spin: f64) -> NonlinearRigidMotion {
+        NonlinearRigidMotion::new(
+            Pose::new(
+                Vector::new(rng.range(-reach, reach), rng.range(-reach, reach)),
+                rng.range(-3.0, 3.0),
+            ),
+            Vector::new(rng.range(-0.2, 0.2), rng.range(-0.2, 0.2)),
+            Vector::new(rng.range(-4.0, 4.0), rng.range(-4.0, 4.0)),
+            rng.range(-spin, spin),
+        )
+    }
+
     /// World support value max over shape of x·u at pose.
     fn world_support(c: &dyn ConvexCurve, pose: &Pose, u: Vector) -> f64 {
         let local = pose.rotation.inverse_transform_vector(u);
@@ -1211,18 +1225,7 @@ mod tests {
         for case in 0..400 {
             let o1 = &*shapes[case % shapes.len()];
             let o2 = &*shapes[(case / shapes.len()) % 3];
-            let motion = |rng: &mut Lcg| {
-                NonlinearRigidMotion::new(
-                    Pose::new(
-                        Vector::new(rng.range(-3.0, 3.0), rng.range(-3.0, 3.0)),
-                        rng.range(-3.0, 3.0),
-                    ),
-                    Vector::new(rng.range(-0.2, 0.2), rng.range(-0.2, 0.2)),
-                    Vector::new(rng.range(-4.0, 4.0), rng.range(-4.0, 4.0)),
-                    rng.range(-40.0, 40.0),
-                )
-            };
-            let (m1, m2) = (motion(&mut rng), motion(&mut rng));
+            let (m1, m2) = (random_motion(&mut rng, 3.0, 40.0), random_motion(&mut rng, 3.0, 40.0));
             let tr = Tracker::new(o1, &m1, o2, &m2, 0.0, 1.0, &ToiOptions::default()).unwrap();
             let t = rng.range(0.0, 0.5);
             let phi = rng.range(-3.1, 3.1);
@@ -1379,18 +1382,7 @@ mod tests {
         for case in 0..2000 {
             let o1 = &*shapes[case % shapes.len()];
             let o2 = &*shapes[(case / shapes.len()) % 3];
-            let motion = |rng: &mut Lcg| {
-                NonlinearRigidMotion::new(
-                    Pose::new(
-                        Vector::new(rng.range(-4.0, 4.0), rng.range(-4.0, 4.0)),
-                        rng.range(-3.0, 3.0),
-                    ),
-                    Vector::new(rng.range(-0.2, 0.2), rng.range(-0.2, 0.2)),
-                    Vector::new(rng.range(-4.0, 4.0), rng.range(-4.0, 4.0)),
-                    rng.range(-20.0, 20.0),
-                )
-            };
-            let (m1, m2) = (motion(&mut rng), motion(&mut rng));
+            let (m1, m2) = (random_motion(&mut rng, 4.0, 20.0), random_motion(&mut rng, 4.0, 20.0));
             let target = rng.range(0.0, 0.1);
             let o = ToiOptions {
                 target_distance: target,
