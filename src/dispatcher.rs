@@ -1155,6 +1155,17 @@ mod tests {
         }
         assert_eq!(a.is_strictly_convex(), b.is_strictly_convex());
         assert_eq!(a.support_dd_bound().to_bits(), b.support_dd_bound().to_bits());
+        // The shallow-penetration certificate of the stationary distance reads these.
+        assert_eq!(
+            a.min_radius_of_curvature().to_bits(),
+            b.min_radius_of_curvature().to_bits(),
+            "{what}"
+        );
+        assert_eq!(
+            a.max_radius_of_curvature().to_bits(),
+            b.max_radius_of_curvature().to_bits(),
+            "{what}"
+        );
     }
 
     /// The stack conversion of parry's polygonal shapes is the allocating `RoundedPolygon`

@@ -40,6 +40,7 @@ pub mod jet;
 pub mod manifold;
 pub mod math;
 pub mod parry_shape;
+mod polygon_pieces;
 pub mod rounded_polygon;
 pub mod stationary;
 pub mod toi;

@@ -15,9 +15,10 @@
 //! it with its own Box2D-style routine; [`RoundedPolygon::to_parry`] converts when parry's shape is
 //! wanted.
 
-use crate::curve::{ccw_angle, wrap_phi, ConvexCurve, CurvePoint};
+use crate::curve::{ConvexCurve, CurvePoint};
 use crate::error::{non_negative, positive, ShapeError};
-use crate::math::{cross, perp, unit, Vector};
+use crate::math::{cross, unit, Vector};
+use crate::polygon_pieces::{layout, LayoutScalars, PolygonPieces};
 use core::f64::consts::PI;
 
 /// A convex polygon with rounded corners: its core polygon dilated by `corner_radius`.
@@ -33,11 +34,8 @@ pub struct RoundedPolygon {
     edge_lengths: Vec<f64>,
     /// φ where each piece starts (2n entries: corner 0, edge 0, corner 1, …), then π.
     piece_starts: Vec<f64>,
-    /// φ-to-length factor: φ-length = k · pseudo-length.
-    k: f64,
-    /// Pseudo-radius r + c of a corner.
-    corner_scale: f64,
-    bounding_radius: f64,
+    /// k, r + c and the bounding radius of the layout.
+    scalars: LayoutScalars,
 }
 
 #[cfg(feature = "serde")]
@@ -148,40 +146,36 @@ impl RoundedPolygon {
     /// capsule), which is how parry's segments and capsules take part as object1.
     pub(crate) fn from_core_unchecked(vertices: Vec<Vector>, radius: f64) -> Self {
         let n = vertices.len();
-        let mut edge_normals = Vec::with_capacity(n);
-        let mut edge_lengths = Vec::with_capacity(n);
-        for i in 0..n {
-            let d = vertices[(i + 1) % n] - vertices[i];
-            let len = d.length();
-            edge_lengths.push(len);
-            let dir = d / len;
-            edge_normals.push(Vector::new(dir.y, -dir.x));
-        }
-        let perimeter: f64 = edge_lengths.iter().sum();
-        let c = perimeter / (2.0 * PI);
-        let corner_scale = radius + c;
-        let total = perimeter + 2.0 * PI * corner_scale;
-        let k = 2.0 * PI / total;
-        let mut piece_starts = Vec::with_capacity(2 * n + 1);
-        let mut phi = -PI;
-        for i in 0..n {
-            let alpha = ccw_angle(edge_normals[(i + n - 1) % n], edge_normals[i]);
-            piece_starts.push(phi);
-            phi += k * alpha * corner_scale;
-            piece_starts.push(phi);
-            phi += k * edge_lengths[i];
-        }
-        piece_starts.push(PI);
-        let bounding_radius = vertices.iter().fold(0.0f64, |m, v| m.max(v.length())) + radius;
+        let mut edge_normals = vec![Vector::ZERO; n];
+        let mut edge_lengths = vec![0.0; n];
+        let mut piece_starts = vec![0.0; 2 * n + 1];
+        let scalars = layout(
+            &vertices,
+            radius,
+            &mut edge_normals,
+            &mut edge_lengths,
+            &mut piece_starts,
+        );
         Self {
             vertices,
             radius,
             edge_normals,
             edge_lengths,
             piece_starts,
-            k,
-            corner_scale,
-            bounding_radius,
+            scalars,
+        }
+    }
+
+    /// The shared piece layout over this polygon's data.
+    #[inline]
+    fn pieces(&self) -> PolygonPieces<'_> {
+        PolygonPieces {
+            vertices: &self.vertices,
+            edge_normals: &self.edge_normals,
+            edge_lengths: &self.edge_lengths,
+            piece_starts: &self.piece_starts,
+            radius: self.radius,
+            scalars: self.scalars,
         }
     }
 
@@ -209,61 +203,19 @@ impl RoundedPolygon {
             border_radius: self.radius,
         })
     }
-
-    /// Index of the piece containing φ (even: corner i = idx/2, odd: edge i = idx/2).
-    #[inline]
-    fn piece_of(&self, phi: f64) -> usize {
-        let s = &self.piece_starts;
-        // partition_point: first start > phi; piece is the one before.
-        let idx = s[..s.len() - 1].partition_point(|&x| x <= phi);
-        idx.saturating_sub(1)
-    }
 }
 
 impl ConvexCurve for RoundedPolygon {
     fn eval(&self, phi: f64) -> CurvePoint {
-        let phi = wrap_phi(phi);
-        let n = self.vertices.len();
-        let piece = self.piece_of(phi);
-        let i = piece / 2;
-        let u = phi - self.piece_starts[piece];
-        if piece.is_multiple_of(2) {
-            let w = 1.0 / (self.k * self.corner_scale);
-            let e_prev = self.edge_normals[(i + n - 1) % n];
-            let theta = u * w;
-            let (s, c) = theta.sin_cos();
-            let normal = e_prev * c + perp(e_prev) * s;
-            let t = perp(normal);
-            CurvePoint {
-                point: self.vertices[i] + normal * self.radius,
-                d_point: t * (self.radius * w),
-                dd_point: normal * (-self.radius * w * w),
-                normal,
-                d_normal: t * w,
-                dd_normal: normal * (-w * w),
-            }
-        } else {
-            let e = self.edge_normals[i];
-            let dir = perp(e);
-            let len = self.edge_lengths[i];
-            let s = (u / self.k).clamp(0.0, len);
-            CurvePoint {
-                point: self.vertices[i] + e * self.radius + dir * s,
-                d_point: dir / self.k,
-                dd_point: Vector::ZERO,
-                normal: e,
-                d_normal: Vector::ZERO,
-                dd_normal: Vector::ZERO,
-            }
-        }
+        self.pieces().eval(phi)
     }
 
     fn breakpoints(&self) -> &[f64] {
-        &self.piece_starts[..self.piece_starts.len() - 1]
+        &self.piece_starts[..2 * self.vertices.len()]
     }
 
     fn bounding_radius(&self) -> f64 {
-        self.bounding_radius
+        self.scalars.bounding_radius
     }
 
     fn min_radius_of_curvature(&self) -> f64 {
@@ -272,38 +224,11 @@ impl ConvexCurve for RoundedPolygon {
     }
 
     fn phi_range_of_normal(&self, m: Vector) -> (f64, f64) {
-        let n = self.vertices.len();
-        // Corner i covers normals from e_{i-1} (exclusive) to e_i (inclusive as edge i).
-        let edge_range = |i: usize| (self.piece_starts[2 * i + 1], self.piece_starts[2 * i + 2]);
-        for i in 0..n {
-            let e_prev = self.edge_normals[(i + n - 1) % n];
-            let e = self.edge_normals[i];
-            let span = ccw_angle(e_prev, e);
-            let a = ccw_angle(e_prev, m);
-            if a == 0.0 || (m - e_prev).length_squared() < 1e-30 {
-                return edge_range((i + n - 1) % n);
-            }
-            if a < span {
-                let phi = self.piece_starts[2 * i] + a * self.k * self.corner_scale;
-                return (phi, phi);
-            }
-            if a == span || (m - e).length_squared() < 1e-30 {
-                return edge_range(i);
-            }
-        }
-        // Only reachable through rounding: the normal sits on edge n−1's boundary.
-        edge_range(n - 1)
+        self.pieces().phi_range_of_normal(m)
     }
 
     fn support_point(&self, m: Vector) -> Vector {
-        let m = m.normalize_or(Vector::X);
-        let best = self
-            .vertices
-            .iter()
-            .copied()
-            .max_by(|a, b| a.dot(m).total_cmp(&b.dot(m)))
-            .unwrap_or(Vector::ZERO);
-        best + m * self.radius
+        self.pieces().support_point(m)
     }
 }
 
