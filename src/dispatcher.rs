@@ -281,14 +281,7 @@ fn pair_distance(
     opts: &DistanceOptions,
 ) -> Result<StationaryDistance, QueryError> {
     if swapped {
-        let r = stationary_distance(c1.get(), c2.get(), &pos12.inverse(), opts)?;
-        Ok(StationaryDistance {
-            point1: r.point2,
-            point2: r.point1,
-            normal1: r.normal2,
-            normal2: r.normal1,
-            ..r
-        })
+        Ok(stationary_distance(c1.get(), c2.get(), &pos12.inverse(), opts)?.swapped())
     } else {
         stationary_distance(c1.get(), c2.get(), pos12, opts)
     }
@@ -956,15 +949,8 @@ impl QueryDispatcher for SmoothDispatcher {
                 let r = if curve_first {
                     time_of_impact_halfspace(curve.get(), motion1, hs, motion2, start_time, end_time, &opts)
                 } else {
-                    time_of_impact_halfspace(curve.get(), motion2, hs, motion1, start_time, end_time, &opts).map(|r| {
-                        TimeOfImpact {
-                            point1: r.point2,
-                            point2: r.point1,
-                            normal1: r.normal2,
-                            normal2: r.normal1,
-                            ..r
-                        }
-                    })
+                    time_of_impact_halfspace(curve.get(), motion2, hs, motion1, start_time, end_time, &opts)
+                        .map(TimeOfImpact::swapped)
                 };
                 let thickness = if curve_first {
                     g1.ccd_thickness()

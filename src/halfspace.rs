@@ -25,7 +25,7 @@
 use crate::curve::ConvexCurve;
 use crate::math::{perp, Pose, Vector};
 use crate::stationary::{DistanceStatus, QueryError, StationaryDistance};
-use crate::toi::{TimeOfImpact, ToiCost, ToiOptions, ToiStatus};
+use crate::toi::{motion_is_finite, TimeOfImpact, ToiCost, ToiOptions, ToiStatus};
 use parry2d_f64::query::NonlinearRigidMotion;
 use parry2d_f64::shape::HalfSpace;
 
@@ -165,10 +165,13 @@ fn toi_halfspace(
     t1: f64,
     opts: &ToiOptions,
 ) -> Result<TimeOfImpact, QueryError> {
-    let finite = |m: &NonlinearRigidMotion| {
-        m.start.is_finite() && m.local_center.is_finite() && m.linvel.is_finite() && m.angvel.is_finite()
-    };
-    if !(finite(mc) && finite(mh) && t0.is_finite() && t1.is_finite() && hs.normal.is_finite() && opts.is_valid()) {
+    if !(motion_is_finite(mc)
+        && motion_is_finite(mh)
+        && t0.is_finite()
+        && t1.is_finite()
+        && hs.normal.is_finite()
+        && opts.is_valid())
+    {
         return Err(QueryError::NonFinite);
     }
     if t1 < t0 {

@@ -144,6 +144,20 @@ pub struct StationaryDistance {
     pub evaluations: usize,
 }
 
+impl StationaryDistance {
+    /// The same answer with the roles of the two shapes exchanged (witness points and normals
+    /// swapped; distance, φ, status and counts unchanged).
+    pub fn swapped(self) -> Self {
+        Self {
+            point1: self.point2,
+            point2: self.point1,
+            normal1: self.normal2,
+            normal2: self.normal1,
+            ..self
+        }
+    }
+}
+
 /// A root solver's state, shared with the time of impact's corrector.
 pub(crate) struct Solver<'a> {
     pub obj1: &'a dyn ConvexCurve,

@@ -224,6 +224,20 @@ pub struct TimeOfImpact {
     pub cost: ToiCost,
 }
 
+impl TimeOfImpact {
+    /// The same impact with the roles of the two shapes exchanged (witness points and normals
+    /// swapped; time, distance and cost unchanged).
+    pub fn swapped(self) -> Self {
+        Self {
+            point1: self.point2,
+            point2: self.point1,
+            normal1: self.normal2,
+            normal2: self.normal1,
+            ..self
+        }
+    }
+}
+
 /// One event of the tracked path, for figures and debugging ([`time_of_impact_traced`]).
 ///
 /// φ is recorded unwrapped — continuous along the path, so it may leave [−π, π) after turns;
@@ -352,19 +366,14 @@ fn toi_roles<T: Tracer>(
         Tracker::new(shape1, motion1, shape2, motion2, start_time, end_time, options)?.run(trace)
     } else if shape1.is_strictly_convex() {
         let r = Tracker::new(shape2, motion2, shape1, motion1, start_time, end_time, options)?.run(trace)?;
-        Ok(TimeOfImpact {
-            point1: r.point2,
-            point2: r.point1,
-            normal1: r.normal2,
-            normal2: r.normal1,
-            ..r
-        })
+        Ok(r.swapped())
     } else {
         Err(QueryError::NotStrictlyConvex)
     }
 }
 
-fn motion_is_finite(m: &NonlinearRigidMotion) -> bool {
+/// Every number of the motion is finite.
+pub(crate) fn motion_is_finite(m: &NonlinearRigidMotion) -> bool {
     m.start.is_finite() && m.local_center.is_finite() && m.linvel.is_finite() && m.angvel.is_finite()
 }
 

@@ -13,6 +13,7 @@
 //! * after: any non-finite number in parry's answer.
 
 use crate::math::{Pose, Real};
+use crate::toi::motion_is_finite;
 use parry2d_f64::query::{
     ClosestPoints, Contact, ContactManifold, NonlinearRigidMotion, ShapeCastHit, ShapeDistance, ShapeIntersection,
     Unsupported,
@@ -156,10 +157,7 @@ pub(crate) fn cast_window_ok(
     t0: Real,
     t1: Real,
 ) -> Result<bool, Unsupported> {
-    let finite = |m: &NonlinearRigidMotion| {
-        m.start.is_finite() && m.local_center.is_finite() && m.linvel.is_finite() && m.angvel.is_finite()
-    };
-    if !(finite(m1) && finite(m2) && t0.is_finite() && t1.is_finite()) {
+    if !(motion_is_finite(m1) && motion_is_finite(m2) && t0.is_finite() && t1.is_finite()) {
         return Err(Unsupported);
     }
     if !(pose_ok(&m1.start) && pose_ok(&m2.start) && shapes_ok(g1, g2)) {
