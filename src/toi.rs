@@ -427,7 +427,7 @@ impl<'a> Tracker<'a> {
         let rel = RelativeMotion::new(m1, m2);
         let size = obj1.bounding_radius().max(obj2.bounding_radius());
         let (c1, c2) = rel.centers();
-        let reach = obj1.bounding_radius() + c1.length() + obj2.bounding_radius() + c2.length() + opts.target_distance;
+        let reach = circles_reach(obj1, c1, obj2, c2, opts.target_distance);
         if !(size.is_finite() && size > 0.0 && reach.is_finite()) {
             return Err(QueryError::Degenerate);
         }
@@ -1097,6 +1097,14 @@ impl<'a> Tracker<'a> {
     }
 }
 
+/// The distance below which the bounding circles about the rotation centres `c1`, `c2` (each
+/// in its shape's local frame) come within `target` of each other: the two radii (bounding radius
+/// plus the centre's offset from the local origin) plus the target.
+#[inline]
+fn circles_reach(shape1: &dyn ConvexCurve, c1: Vector, shape2: &dyn ConvexCurve, c2: Vector, target: f64) -> f64 {
+    shape1.bounding_radius() + c1.length() + shape2.bounding_radius() + c2.length() + target
+}
+
 /// Whether two circles whose centres are `offset` apart and move apart at the relative velocity
 /// `velocity` stay farther apart than `reach` (the sum of their radii plus the target distance)
 /// for a time `span`: min over s ∈ [0, span] of |offset + velocity·s| > reach (with a relative
@@ -1134,11 +1142,13 @@ pub fn bounding_circles_part(
     if !(motion_is_finite(motion1) && motion_is_finite(motion2) && start_time <= end_time) {
         return false;
     }
-    let reach = shape1.bounding_radius()
-        + motion1.local_center.length()
-        + shape2.bounding_radius()
-        + motion2.local_center.length()
-        + target_distance;
+    let reach = circles_reach(
+        shape1,
+        motion1.local_center,
+        shape2,
+        motion2.local_center,
+        target_distance,
+    );
     if !(reach.is_finite() && target_distance >= 0.0 && (end_time - start_time).is_finite()) {
         return false;
     }
