@@ -281,7 +281,8 @@ struct Node {
 
 /// The signed distance between object1 (`obj1`, any convex curve) and object2 (`obj2`, strictly
 /// convex) with object2 at `pos12` in object1's frame, by the algorithm described in the module
-/// documentation.
+/// documentation. The curves may be trait objects or of known types (then the search is compiled
+/// for the pair, as for [`crate::time_of_impact`]).
 pub fn stationary_distance<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized>(
     obj1: &A,
     obj2: &B,
