@@ -7,21 +7,15 @@ use rapier2d_f64::prelude::*;
 use smooth_ccd2d::{Ellipse, RoundedPolygon, SmoothDispatcher};
 use std::sync::mpsc::{channel, Receiver};
 use std::time::Instant;
+use world::World;
 
-/// A rapier scene driven by `PhysicsPipeline::step`.
+#[path = "common/world.rs"]
+mod world;
+
+/// A rapier scene driven by `PhysicsPipeline::step`, recording collision events.
 struct Scene {
     gravity: Vector,
-    params: IntegrationParameters,
-    pipeline: PhysicsPipeline,
-    islands: IslandManager,
-    broad_phase: DefaultBroadPhase,
-    narrow_phase: NarrowPhase,
-    bodies: RigidBodySet,
-    colliders: ColliderSet,
-    impulse_joints: ImpulseJointSet,
-    multibody_joints: MultibodyJointSet,
-    soft_bodies: SoftBodySet,
-    ccd: CCDSolver,
+    world: World,
     events: ChannelEventCollector,
     collisions: Receiver<CollisionEvent>,
 }
@@ -33,28 +27,18 @@ impl Scene {
         let (tear_send, _) = channel();
         Scene {
             gravity,
-            params: IntegrationParameters::default(),
-            pipeline: PhysicsPipeline::new(),
-            islands: IslandManager::new(),
-            broad_phase: DefaultBroadPhase::new(),
-            narrow_phase: if smooth {
+            world: World::new(if smooth {
                 NarrowPhase::with_query_dispatcher(SmoothDispatcher::default())
             } else {
                 NarrowPhase::new()
-            },
-            bodies: RigidBodySet::new(),
-            colliders: ColliderSet::new(),
-            impulse_joints: ImpulseJointSet::new(),
-            multibody_joints: MultibodyJointSet::new(),
-            soft_bodies: SoftBodySet::new(),
-            ccd: CCDSolver::new(),
+            }),
             events: ChannelEventCollector::new(collision_send, force_send, tear_send),
             collisions,
         }
     }
 
     fn insert(&mut self, body: RigidBodyBuilder, collider: ColliderBuilder) -> RigidBodyHandle {
-        self.insert_with_collider(body, collider).0
+        self.world.insert(body, collider).0
     }
 
     fn insert_with_collider(
@@ -62,31 +46,15 @@ impl Scene {
         body: RigidBodyBuilder,
         collider: ColliderBuilder,
     ) -> (RigidBodyHandle, ColliderHandle) {
-        let h = self.bodies.insert(body);
-        let c = self.colliders.insert_with_parent(collider, h, &mut self.bodies);
-        (h, c)
+        self.world.insert(body, collider)
     }
 
     fn step(&mut self) {
-        self.pipeline.step(
-            self.gravity,
-            &self.params,
-            &mut self.islands,
-            &mut self.broad_phase,
-            &mut self.narrow_phase,
-            &mut self.bodies,
-            &mut self.colliders,
-            &mut self.impulse_joints,
-            &mut self.multibody_joints,
-            &mut self.soft_bodies,
-            &mut self.ccd,
-            &(),
-            &self.events,
-        );
+        self.world.step(self.gravity, &self.events);
     }
 
     fn pose(&self, h: RigidBodyHandle) -> (Vector, f64) {
-        let rb = &self.bodies[h];
+        let rb = &self.world.bodies[h];
         (rb.translation(), rb.rotation().angle())
     }
 }
@@ -504,7 +472,7 @@ fn deterministic_scene() -> Vec<u64> {
     }
     let mut bits = Vec::new();
     for h in handles {
-        let rb = &scene.bodies[h];
+        let rb = &scene.world.bodies[h];
         let (t, r) = (rb.translation(), rb.rotation());
         bits.extend([t.x.to_bits(), t.y.to_bits(), r.re.to_bits(), r.im.to_bits()]);
         bits.extend([rb.linvel().x.to_bits(), rb.linvel().y.to_bits(), rb.angvel().to_bits()]);

@@ -13,6 +13,8 @@
 //! Run with `cargo test --test threads -- --nocapture` to see the hashes.
 
 mod reliability;
+#[path = "common/world.rs"]
+mod world;
 
 use parry2d_f64::math::{Pose, Real};
 use parry2d_f64::query::details::{NormalConstraints, ShapeCastOptions};
@@ -32,6 +34,7 @@ use std::collections::BTreeMap;
 use std::collections::HashSet;
 use std::sync::{Arc, Mutex};
 use std::thread::ThreadId;
+use world::World;
 
 /// Compile-time: everything a user shares between threads is `Send + Sync`.
 const _: () = {
@@ -277,17 +280,7 @@ impl PersistentQueryDispatcher<ContactManifoldData, ContactData> for Spy {
 }
 
 struct Scene {
-    params: IntegrationParameters,
-    pipeline: PhysicsPipeline,
-    islands: IslandManager,
-    broad_phase: DefaultBroadPhase,
-    narrow_phase: NarrowPhase,
-    bodies: RigidBodySet,
-    colliders: ColliderSet,
-    impulse_joints: ImpulseJointSet,
-    multibody_joints: MultibodyJointSet,
-    soft_bodies: SoftBodySet,
-    ccd: CCDSolver,
+    world: World,
     handles: Vec<RigidBodyHandle>,
     threads: Arc<Mutex<HashSet<ThreadId>>>,
 }
@@ -306,26 +299,15 @@ impl Scene {
             threads: seen.clone(),
         };
         let mut s = Scene {
-            params: IntegrationParameters::default(),
-            pipeline: PhysicsPipeline::new(),
-            islands: IslandManager::new(),
-            broad_phase: DefaultBroadPhase::new(),
-            narrow_phase: NarrowPhase::with_query_dispatcher(spy),
-            bodies: RigidBodySet::new(),
-            colliders: ColliderSet::new(),
-            impulse_joints: ImpulseJointSet::new(),
-            multibody_joints: MultibodyJointSet::new(),
-            soft_bodies: SoftBodySet::new(),
-            ccd: CCDSolver::new(),
+            world: World::new(NarrowPhase::with_query_dispatcher(spy)),
             handles: Vec::new(),
             threads: seen,
         };
-        s.pipeline.configure_thread_pool(threads).expect("thread pool");
-        let ground = s
-            .bodies
-            .insert(RigidBodyBuilder::fixed().translation(Vector::new(0.0, -0.5)));
-        s.colliders
-            .insert_with_parent(ColliderBuilder::cuboid(20.0, 0.5), ground, &mut s.bodies);
+        s.world.pipeline.configure_thread_pool(threads).expect("thread pool");
+        s.world.insert(
+            RigidBodyBuilder::fixed().translation(Vector::new(0.0, -0.5)),
+            ColliderBuilder::cuboid(20.0, 0.5),
+        );
         for i in 0..BODIES {
             let x = -9.0 + 0.9 * (i % 20) as f64;
             let y = 1.0 + 0.9 * (i / 20) as f64;
@@ -335,29 +317,24 @@ impl Scene {
                 2 => SharedShape::new(CapsuleEllipse::new(0.1, 0.15, 0.2)),
                 _ => SharedShape::new(Ellipse::new(0.25, 0.25)),
             };
-            let h = s.bodies.insert(
+            let (h, _) = s.world.insert(
                 RigidBodyBuilder::dynamic()
                     .translation(Vector::new(x, y))
                     .rotation(0.37 * i as f64)
                     .angvel(2.0 - 0.1 * i as f64)
                     .ccd_enabled(i % 2 == 0),
+                ColliderBuilder::new(shape),
             );
-            s.colliders
-                .insert_with_parent(ColliderBuilder::new(shape), h, &mut s.bodies);
             s.handles.push(h);
         }
         for k in 0..3 {
-            let shot = s.bodies.insert(
+            let (shot, _) = s.world.insert(
                 RigidBodyBuilder::dynamic()
                     .translation(Vector::new(-15.0 - 3.0 * k as f64, 1.5 + 1.2 * k as f64))
                     .linvel(Vector::new(250.0, 0.0))
                     .angvel(120.0)
                     .ccd_enabled(true),
-            );
-            s.colliders.insert_with_parent(
                 ColliderBuilder::new(SharedShape::new(Ellipse::new(0.3, 0.08))),
-                shot,
-                &mut s.bodies,
             );
             s.handles.push(shot);
         }
@@ -365,21 +342,7 @@ impl Scene {
     }
 
     fn step(&mut self) {
-        self.pipeline.step(
-            Vector::new(0.0, -9.81),
-            &self.params,
-            &mut self.islands,
-            &mut self.broad_phase,
-            &mut self.narrow_phase,
-            &mut self.bodies,
-            &mut self.colliders,
-            &mut self.impulse_joints,
-            &mut self.multibody_joints,
-            &mut self.soft_bodies,
-            &mut self.ccd,
-            &(),
-            &(),
-        );
+        self.world.step(Vector::new(0.0, -9.81), &());
     }
 
     /// FNV-1a over the bits of every body's pose and velocities, and those numbers.
@@ -387,7 +350,7 @@ impl Scene {
         let mut hash = 0xCBF2_9CE4_8422_2325u64;
         let mut words = Vec::new();
         for h in &self.handles {
-            let rb = &self.bodies[*h];
+            let rb = &self.world.bodies[*h];
             let (t, r) = (rb.translation(), rb.rotation());
             let w = [t.x, t.y, r.re, r.im, rb.linvel().x, rb.linvel().y, rb.angvel()];
             for x in w {

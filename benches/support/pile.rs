@@ -4,6 +4,7 @@
 //! parry's `RoundConvexPolygon` for the rounded polygons) and parry's default dispatcher.
 
 use super::{polygon_approximation, POLYGON_VERTICES};
+use crate::common::world::World;
 use rapier2d_f64::prelude::*;
 use smooth_ccd2d::{CapsuleEllipse, Ellipse, RoundedPolygon, SmoothDispatcher};
 
@@ -63,17 +64,7 @@ fn shape(i: usize, rng: &mut Lcg, exact: bool) -> SharedShape {
 
 /// A rapier world stepping the pile.
 pub struct Pile {
-    pipeline: PhysicsPipeline,
-    params: IntegrationParameters,
-    islands: IslandManager,
-    broad_phase: DefaultBroadPhase,
-    narrow_phase: NarrowPhase,
-    bodies: RigidBodySet,
-    colliders: ColliderSet,
-    impulse_joints: ImpulseJointSet,
-    multibody_joints: MultibodyJointSet,
-    soft_bodies: SoftBodySet,
-    ccd: CCDSolver,
+    world: World,
 }
 
 impl Pile {
@@ -84,19 +75,7 @@ impl Pile {
         } else {
             NarrowPhase::new()
         };
-        let mut p = Pile {
-            pipeline: PhysicsPipeline::new(),
-            params: IntegrationParameters::default(),
-            islands: IslandManager::new(),
-            broad_phase: DefaultBroadPhase::new(),
-            narrow_phase,
-            bodies: RigidBodySet::new(),
-            colliders: ColliderSet::new(),
-            impulse_joints: ImpulseJointSet::new(),
-            multibody_joints: MultibodyJointSet::new(),
-            soft_bodies: SoftBodySet::new(),
-            ccd: CCDSolver::new(),
-        };
+        let mut w = World::new(narrow_phase);
         let walls = [
             (Vector::new(0.0, -0.5), Vector::new(HALF_WIDTH + 1.0, 0.5)),
             (
@@ -109,9 +88,10 @@ impl Pile {
             ),
         ];
         for (c, h) in walls {
-            let b = p.bodies.insert(RigidBodyBuilder::fixed().translation(c));
-            p.colliders
-                .insert_with_parent(ColliderBuilder::cuboid(h.x, h.y), b, &mut p.bodies);
+            w.insert(
+                RigidBodyBuilder::fixed().translation(c),
+                ColliderBuilder::cuboid(h.x, h.y),
+            );
         }
         let mut rng = Lcg(0x005e_ed2d);
         let spacing = 2.0 * HALF_WIDTH / COLUMNS as f64;
@@ -120,40 +100,26 @@ impl Pile {
             let (row, col) = (i / COLUMNS, i % COLUMNS);
             let x = -HALF_WIDTH + spacing * (col as f64 + 0.5) + rng.range(-0.03, 0.03);
             let y = 1.0 + row as f64;
-            let b = p.bodies.insert(
+            w.insert(
                 RigidBodyBuilder::dynamic()
                     .translation(Vector::new(x, y))
                     .rotation(rng.range(-3.0, 3.0))
                     .angvel(rng.range(-2.0, 2.0)),
+                ColliderBuilder::new(s).friction(0.5),
             );
-            p.colliders
-                .insert_with_parent(ColliderBuilder::new(s).friction(0.5), b, &mut p.bodies);
         }
-        p
+        Pile { world: w }
     }
 
     /// One rapier step (1/60 s).
     pub fn step(&mut self) {
-        self.pipeline.step(
-            Vector::new(0.0, -9.81),
-            &self.params,
-            &mut self.islands,
-            &mut self.broad_phase,
-            &mut self.narrow_phase,
-            &mut self.bodies,
-            &mut self.colliders,
-            &mut self.impulse_joints,
-            &mut self.multibody_joints,
-            &mut self.soft_bodies,
-            &mut self.ccd,
-            &(),
-            &(),
-        );
+        self.world.step(Vector::new(0.0, -9.81), &());
     }
 
     /// Contact pairs with at least one contact point.
     pub fn touching_pairs(&self) -> usize {
-        self.narrow_phase
+        self.world
+            .narrow_phase
             .contact_pairs()
             .filter(|p| p.manifolds().iter().any(|m| !m.points.is_empty()))
             .count()
