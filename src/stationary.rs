@@ -208,7 +208,10 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Solver<'a, A, B> {
         }
     }
 
-    /// Safeguarded Halley on S inside [lo, hi] with S(lo) ≤ 0 ≤ S(hi).
+    /// Safeguarded Halley on S inside [lo, hi] with S(lo) ≤ 0 ≤ S(hi): each iterate replaces the
+    /// end of the bracket with the same sign of S; an iterate outside the bracket, or one after an
+    /// iteration that did not halve |S|, is replaced by the midpoint (derivatives jump at piece
+    /// ends, where Halley stalls or oscillates).
     pub fn bracketed_root(
         &mut self,
         mut lo: f64,
@@ -228,8 +231,10 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Solver<'a, A, B> {
         } else {
             (hi, jhi)
         };
-        let mut last_width = hi - lo;
-        for it in 0..self.max_iter {
+        // |S| before the last iteration: an iteration that did not halve it is followed by a
+        // bisection (the Halley iterate is stalling or oscillating).
+        let mut last_s = f64::INFINITY;
+        for _ in 0..self.max_iter {
             let (s, s1, s2) = (jx.side, jx.side_p, jx.side_pp);
             let mut cand = f64::NAN;
             if s1 > 0.0 {
@@ -240,11 +245,10 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Solver<'a, A, B> {
                     x - s / s1
                 };
             }
-            let width = hi - lo;
-            let use_bisect = !(cand > lo && cand < hi) || (it > 1 && width > 0.5 * last_width);
+            let use_bisect = !(cand > lo && cand < hi) || s.abs() > 0.5 * last_s;
+            last_s = s.abs();
             if use_bisect {
                 cand = 0.5 * (lo + hi);
-                last_width = width;
             } else {
                 self.newton += 1;
             }

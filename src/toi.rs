@@ -61,9 +61,18 @@
 //!
 //! **Two-sided form.** The same bound taken backwards from the end of a step, with the point
 //! corrected there, covers [tₖ₊₁ − s_B, tₖ₊₁]; a step is safe when s_A + s_B ≥ tₖ₊₁ − tₖ. The
-//! tracker proposes steps up to 2·s_A (or, approaching, most of the way to where the Taylor model
-//! of D reaches the target), checks s_A + s_B after the correction, and otherwise retries with
-//! the plain guard step s_A.
+//! tracker proposes steps up to 2·s_A, checks s_A + s_B after the correction, and otherwise
+//! retries with the plain guard step s_A.
+//!
+//! **Aiming at the contact.** Approaching, when the root h_m of the Taylor model of D
+//! (Dₖ − δ + D'h + D''h²/2) lies beyond s_A but within the extension, the step goes exactly to
+//! h_m: near contact the model is accurate to O(h³), so the corrected point usually meets the
+//! contact test at once instead of closing in by guard steps. If the corrected point is below
+//! the target by more than the contact floor (1e-12·s), the contact lies inside the step: the
+//! tracker backs up from that far point along its own Taylor model of D to the target
+//! (`Tracker::back_to_contact`), corrects there tightly and certifies that point instead; the
+//! backward bound s_B of an aimed step is taken from the floor level, so the interval between
+//! the two ends is covered by the guard from both sides.
 //!
 //! ## Contact at the start
 //!
@@ -98,6 +107,9 @@ const LOOSE_SIDE: f64 = 0.1;
 /// Away from contact the residual's Newton step |S/S_φ| must also stay below this (radians):
 /// on a flat piece S can be large while F is exact.
 const LOOSE_PHI: f64 = 3e-2;
+/// How far below the target a reported contact may be, relative to the size (the `Hit`
+/// contract: D ≥ δ − 1e-12·s).
+const CONTACT_FLOOR: f64 = 1e-12;
 /// Largest φ-travel of one predictor step (radians).
 const MAX_TRAVEL: f64 = 1.0;
 
@@ -804,12 +816,16 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
         }
 
         let mut h_acc = (window * 0.5).max(f64::MIN_POSITIVE);
+        // How far below the target a reported contact may be (`ToiStatus::Hit`).
+        let floor = -CONTACT_FLOOR * self.size;
         // After a failed two-sided step, the next try is the plain guard step.
         let mut retry_plain = false;
+        // The accepted point before t: no contact lies before it.
+        let mut t_prev = t;
         loop {
             let gap = j.fwd.v - delta;
             if gap <= self.tol_d {
-                let r = self.refine_hit(t, phi, j, trace);
+                let r = self.refine_hit(t_prev, t, phi, j, trace);
                 return Ok(r);
             }
             if self.cost.predictor_steps >= self.opts.max_steps || self.cost.evaluations >= self.opts.max_evaluations {
@@ -851,15 +867,16 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
             // from its end covers the rest, s_A + s_B ≥ h (checked after the correction). The
             // length is chosen from the Taylor model of D along the curve.
             let mut extended = None;
+            let mut aim = false;
             if guard_limited && !retry_plain {
                 let d2 = j.fwd.tt + j.fwd.pt * dphi;
                 let mut he = (2.0 * h_guard).min(span);
                 // Where the Taylor model of D reaches the target (NaN or infinite if it does not).
                 let h_model = guard_step(gap, j.fwd.t, -d2);
                 if h_model > h_guard && h_model < he {
-                    // Approaching: land short of the model's contact, a tenth of the way back to
-                    // the guard step.
-                    he = h_guard + 0.9 * (h_model - h_guard);
+                    // Approaching: aim at the model's contact itself.
+                    he = h_model;
+                    aim = true;
                 } else {
                     for _ in 0..3 {
                         let g_end = gap + he * (j.fwd.t + 0.5 * d2 * he);
@@ -871,7 +888,7 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
                         he = ((h_guard + s_b) / 1.1).min(span);
                     }
                 }
-                if he > 1.05 * h_guard {
+                if aim || he > 1.05 * h_guard {
                     extended = Some(h_guard);
                     h = he;
                 }
@@ -884,7 +901,7 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
                 // No representable progress: the guard pins us at t.
                 return Ok(self.finish(ToiStatus::OutOfIterations, t, phi, j));
             }
-            let t_new = if h >= h_max { self.t1 } else { t + h };
+            let mut t_new = if h >= h_max { self.t1 } else { t + h };
             // The accepted point may leave a residual S (loose tolerance away from contact):
             // its Newton correction joins the Taylor step.
             let phi_pred = phi + resid + h * (dphi + 0.5 * ddphi * h);
@@ -892,7 +909,18 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
                 phi: self.unwrapped(phi_pred),
                 t: t_new,
             });
-            let corrected = self.correct(t_new, phi_pred, Tol::Loose, trace);
+            let mut corrected = self.correct(t_new, phi_pred, Tol::Loose, trace);
+            if aim {
+                // An aimed step that landed beyond the contact: back up to the model's contact
+                // from the far side, and certify that point instead.
+                if let Some((phi_c, jc)) = corrected.filter(|(_, jc)| jc.fwd.v - delta < floor) {
+                    corrected = self.back_to_contact(t, t_new, phi_c, &jc, trace).map(|(tb, pb, jb)| {
+                        t_new = tb;
+                        h = tb - t;
+                        (pb, jb)
+                    });
+                }
+            }
             let accept = match corrected {
                 Some((phi_c, jc)) => {
                     // Reject when the corrector had to move far from the prediction, or landed on
@@ -910,9 +938,14 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
                     // one is not trusted: it could be a local maximum of F ≤ 0 of another branch.
                     let gap_c = jc.fwd.v - delta;
                     let mut ok = jc.side.p > 0.0 && gap_c > -self.tol_d && (moved <= 0.25 || gap_c > self.tol_d);
+                    if aim && !(gap_c >= floor) {
+                        ok = false;
+                    }
                     if let Some(s_a) = extended.filter(|_| ok) {
-                        // Backward bound from the new point: g(t_new − s) ≥ gap_B − g'·s − M s²/2.
-                        let gap_b = jc.fwd.v - delta;
+                        // Backward bound from the new point: g(t_new − s) ≥ gap_B − g'·s − M s²/2
+                        // (an aimed step may end a hair below the target: its bound is taken
+                        // from the floor the contact allows).
+                        let gap_b = jc.fwd.v - delta - if aim { floor } else { 0.0 };
                         let slope_b = jc.fwd.t - (lam - self.omega1) * jc.side.v;
                         let s_b = if gap_b > 0.0 {
                             guard_step(gap_b, -slope_b, m)
@@ -939,6 +972,7 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
                     }
                     // The corrector's root is a local maximum of F; with F > 0 it is the global
                     // one. With F ≤ 0 we are at contact anyway. Its jet is already full.
+                    t_prev = t;
                     t = t_new;
                     phi = self.rewrap(phi_c);
                     j = jc;
@@ -981,6 +1015,7 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
                         let t_try = t + h;
                         let (p2, j2) = self.global_at(t_try, phi_pred, Tol::Fixed(self.side_tol))?;
                         self.cost.predictor_steps += 1;
+                        t_prev = t;
                         t = t_try;
                         phi = self.rewrap(p2);
                         j = j2;
@@ -991,25 +1026,100 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
         }
     }
 
-    /// At a safe point within tolerance of the target, sharpens the contact time: Newton steps
-    /// on D from the safe side (a few, while they stay above the target), then, if one lands
-    /// beyond the target, Illinois regula falsi on D(t) − δ between the last safe point and that
-    /// point. The answer is the sample closest to the target among those with
+    /// From a point (t_b, φ_b) of an aimed step that landed beyond the contact (D < δ), back to
+    /// where the order-2 Taylor model of D about it reaches the target (Newton when the model has
+    /// no root there), corrected to the side tolerance: (t, φ, jet). None when the distance is
+    /// not decreasing there or the point would not lie in (t, t_b).
+    fn back_to_contact<T: Tracer>(
+        &mut self,
+        t: f64,
+        t_b: f64,
+        phi_b: f64,
+        jb: &PairJet,
+        trace: &mut T,
+    ) -> Option<(f64, f64, PairJet)> {
+        let over = self.opts.target_distance - jb.fwd.v;
+        let d1 = jb.fwd.t;
+        if !(over > 0.0 && d1 < 0.0) {
+            return None;
+        }
+        let (_, dphi, _) = curve_taylor(jb);
+        let d2 = jb.fwd.tt + jb.fwd.pt * dphi;
+        // gap + D'u + D''u²/2 = 0 for the u < 0 nearest 0; with v = −u:
+        // (D''/2)v² − D'v − over = 0, v = 2·over/(−D' + √(D'² + 2D''·over)).
+        let disc = d1 * d1 + 2.0 * d2 * over;
+        let v = if disc >= 0.0 {
+            2.0 * over / (-d1 + disc.sqrt())
+        } else {
+            over / -d1
+        };
+        let tc = t_b - v;
+        if !(tc > t && tc < t_b) {
+            return None;
+        }
+        let (p, j) = self.correct(tc, predict_phi(phi_b, jb, -v), Tol::Fixed(self.side_tol), trace)?;
+        Some((tc, p, j))
+    }
+
+    /// At a point within tolerance of the target, sharpens the contact time: Newton steps on D
+    /// from the safe side (a few, while they stay above the target), then, if one lands beyond
+    /// the target, Illinois regula falsi on D(t) − δ between the last safe point and that point.
+    /// A start a hair below the target (an aimed step, D ≥ δ − 1e-12·s) first takes Newton steps
+    /// backwards, never before `t_lo` (the previous accepted point), until one is above it. The answer is the sample closest to the target among those with
     /// D ≥ δ − 1e-12·s (the safe point itself when nothing better is found). The bracket is
     /// ~gap/|D'| wide, far inside what the guard would step over, so the root found is the first.
-    fn refine_hit<T: Tracer>(&mut self, t: f64, phi: f64, j: PairJet, trace: &mut T) -> TimeOfImpact {
+    fn refine_hit<T: Tracer>(&mut self, t_lo: f64, t: f64, phi: f64, j: PairJet, trace: &mut T) -> TimeOfImpact {
         let delta = self.opts.target_distance;
-        let floor = -1e-12 * self.size;
+        let floor = -CONTACT_FLOOR * self.size;
         let fine = 1e-15 * self.size;
         let mut best = (t, phi, j);
         let better = |best: &(f64, f64, PairJet), jj: &PairJet| {
             let g = jj.fwd.v - delta;
             g >= floor && g.abs() < (best.2.fwd.v - delta).abs() && jj.side.p > 0.0
         };
-        // Newton from the safe side.
         let (mut ts, mut ps, mut js) = (t, phi, j);
         let mut beyond: Option<(f64, f64, f64, PairJet)> = None;
-        for _ in 0..8 {
+        if j.fwd.v - delta < -fine {
+            // An aimed step accepted a hair beyond the target: Newton on D backwards (not before
+            // the previous accepted point) until a point above the target brackets the contact.
+            let mut safe = None;
+            beyond = Some((t, phi, j.fwd.v - delta, j));
+            for _ in 0..4 {
+                let (g, d1) = (js.fwd.v - delta, js.fwd.t);
+                let t_n = (ts - g / d1).max(t_lo);
+                if !(d1 < 0.0 && t_n < ts) {
+                    break;
+                }
+                let Some((phi_n, jn)) = self.correct(
+                    t_n,
+                    predict_phi(ps, &js, t_n - ts),
+                    Tol::Fixed(self.side_tol),
+                    &mut NoTrace,
+                ) else {
+                    break;
+                };
+                if better(&best, &jn) {
+                    best = (t_n, phi_n, jn);
+                }
+                let gn = jn.fwd.v - delta;
+                if gn >= -fine {
+                    if gn > fine {
+                        safe = Some((t_n, phi_n, jn));
+                    } else {
+                        beyond = None;
+                    }
+                    break;
+                }
+                beyond = Some((t_n, phi_n, gn, jn));
+                (ts, ps, js) = (t_n, phi_n, jn);
+            }
+            match safe {
+                Some(sp) => (ts, ps, js) = sp,
+                None => beyond = None,
+            }
+        }
+        // Newton from the safe side.
+        for _ in 0..if beyond.is_some() { 0 } else { 8 } {
             let gap = js.fwd.v - delta;
             let d1 = js.fwd.t;
             if gap <= fine || d1 >= 0.0 {
