@@ -104,6 +104,9 @@ enum Tol {
 const HALLEY_TRIES: usize = 4;
 /// |S| accepted away from contact, as a fraction of the gap F − δ ([`Tracker::side_tol_at`]).
 const LOOSE_SIDE: f64 = 0.1;
+/// Largest F deficit ω₁S²/(2S_φ) an inexact root may cost away from contact, as a fraction of the
+/// gap F − δ ([`Tracker::loose_side`]).
+const LOOSE_DEFICIT: f64 = 5e-3;
 /// Away from contact the residual's Newton step |S/S_φ| must also stay below this (radians):
 /// on a flat piece S can be large while F is exact.
 const LOOSE_PHI: f64 = 3e-2;
@@ -419,6 +422,10 @@ struct Tracker<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> {
     h2_global: f64,
     /// Whole turns taken out of φ by [`Tracker::rewrap`], to record φ unwrapped in the trace.
     turns: f64,
+    /// Object2's angular velocity when it is tracked without it (a disc spinning about its
+    /// centre, [`Tracker::new`]); 0 otherwise. Object2's frame of `rel` is then its frame at
+    /// t = 0, and [`Tracker::result`] turns the witnesses into its frame at the reported time.
+    spin2: f64,
     cost: ToiCost,
     /// The frame at the last time asked for ([`Tracker::frame`]).
     last_frame: PairFrame,
@@ -444,7 +451,19 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
         if t1 < t0 {
             return Err(QueryError::EmptyWindow);
         }
-        let rel = RelativeMotion::new(m1, m2);
+        // A disc centred at its origin and spinning about it (support_dd_bound() = 0: h'' ≡ 0,
+        // so h is constant) looks the same at every angle: track it without its spin (one
+        // sine and cosine less per frame) and turn its witnesses back at the end.
+        let spin2 = if obj2.support_dd_bound() == 0.0 && m2.local_center == Vector::ZERO {
+            m2.angvel
+        } else {
+            0.0
+        };
+        let rel = if spin2 != 0.0 {
+            RelativeMotion::new(m1, &NonlinearRigidMotion { angvel: 0.0, ..*m2 })
+        } else {
+            RelativeMotion::new(m1, m2)
+        };
         let size = obj1.bounding_radius().max(obj2.bounding_radius());
         let (c1, c2) = rel.centers();
         let reach = circles_reach(
@@ -476,6 +495,7 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
             h1_global: obj1.support_dd_bound(),
             h2_global: obj2.support_dd_bound(),
             turns: 0.0,
+            spin2,
             cost: ToiCost::default(),
             last_frame: rel.frame(t0),
         })
@@ -603,15 +623,22 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
     }
 
     fn result(&self, status: ToiStatus, t: f64, j: &PairJet) -> TimeOfImpact {
+        let (mut point2, mut normal2) = (j.support2.point, -j.normal_in_2);
+        if self.spin2 != 0.0 {
+            // Object2 turned by ω₂t about its origin since the frame `rel` tracks it in.
+            let (s, c) = (-self.spin2 * t).sin_cos();
+            let rot = |v: Vector| Vector::new(c * v.x - s * v.y, s * v.x + c * v.y);
+            (point2, normal2) = (rot(point2), rot(normal2));
+        }
         TimeOfImpact {
             status,
             time: t,
             distance: j.fwd.v,
             distance_rate: j.fwd.t,
             point1: j.curve1.point,
-            point2: j.support2.point,
+            point2,
             normal1: j.curve1.normal,
-            normal2: -j.normal_in_2,
+            normal2,
             cost: self.cost,
         }
     }
@@ -669,20 +696,18 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
         s1 > 0.0
             && match tol {
                 Tol::Fixed(x) => s <= x,
-                Tol::Loose => s <= self.loose_side(j.fwd) && s <= LOOSE_PHI * s1,
+                Tol::Loose => s <= self.loose_side(j) && s <= LOOSE_PHI * s1,
             }
     }
 
-    /// The |S| handed to the bracketed solver under `tol` at a point with distance `fwd` and
-    /// slope `s1` = S_φ.
+    /// The |S| handed to the bracketed solver under `tol`, judged at the point `j`.
     #[inline]
-    fn bracket_tol(&self, tol: Tol, fwd: f64, s1: f64) -> f64 {
+    fn bracket_tol(&self, tol: Tol, j: &PairPoint) -> f64 {
         match tol {
             Tol::Fixed(x) => x,
             Tol::Loose => {
-                let x = self.loose_side(fwd);
-                if s1 > 0.0 {
-                    x.min(LOOSE_PHI * s1).max(self.side_tol)
+                if j.side_p > 0.0 {
+                    self.loose_side(j).min(LOOSE_PHI * j.side_p).max(self.side_tol)
                 } else {
                     self.side_tol
                 }
@@ -690,15 +715,27 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
         }
     }
 
-    /// The |S| accepted away from contact at a point with distance `fwd`: a fraction of the gap
-    /// F − δ, never below the side tolerance — so it tightens by itself as the contact nears.
-    /// An inexact root costs F(φ) ≈ D − S²/(2(ρ₁ + ρ₂ + F)) ≥ D − S²/(2·gap): with
-    /// `LOOSE_SIDE` = 0.1, F is low by at most 0.5 % of the gap, which only shortens the next
-    /// guard step a little. The guard itself does not depend on it: F(φ, t) at any φ is a lower
-    /// bound on the distance.
+    /// The |S| accepted away from contact at the point `j`, never below the side tolerance.
+    ///
+    /// F_φ = −ω₁S (ω₁ = N × N'), so about the root φ* (S ≈ S_φ·(φ − φ*)) an inexact root costs
+    /// F(φ) ≈ D − ω₁S²/(2S_φ). Away from contact (gap F − δ above twice the distance tolerance)
+    /// |S| is accepted while that deficit stays below `LOOSE_DEFICIT` of the gap; always, |S| up
+    /// to `LOOSE_SIDE` of the gap (the deficit is then ≤ S²/(2·gap) ≤ 0.5 % of the gap, since
+    /// S_φ/ω₁ ≈ ρ₁ + ρ₂ + F ≥ gap). Within twice the distance tolerance only the second holds, so
+    /// it tightens by itself to the side tolerance as the contact nears and the contact decisions
+    /// are taken on nearly exact roots. A lower F only shortens the next guard step a little; the
+    /// guard itself does not depend on it: F(φ, t) at any φ is a lower bound on the distance.
     #[inline]
-    fn loose_side(&self, fwd: f64) -> f64 {
-        (LOOSE_SIDE * (fwd - self.opts.target_distance)).max(self.side_tol)
+    fn loose_side(&self, j: &PairPoint) -> f64 {
+        let gap = j.fwd - self.opts.target_distance;
+        let by_gap = LOOSE_SIDE * gap;
+        let w = j.curve1.normal_turn_rate();
+        let by_deficit = if gap > 2.0 * self.tol_d && w > 0.0 && j.side_p > 0.0 {
+            (2.0 * LOOSE_DEFICIT * gap * j.side_p / w).sqrt()
+        } else {
+            0.0
+        };
+        by_gap.max(by_deficit).max(self.side_tol)
     }
 
     /// Solves S(φ) = 0 at the solver's fixed time from `phi`: Halley iterations (cubic
@@ -731,7 +768,7 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
                 // Not converging (a piece end, a far root): bracket between the two if S
                 // changes sign, otherwise start the bracketed solver from the better point.
                 if (jn.side > 0.0) != (s > 0.0) {
-                    sv.side_tol = self.bracket_tol(tol, j.fwd.min(jn.fwd), s1);
+                    sv.side_tol = self.bracket_tol(tol, if jn.fwd < j.fwd { &jn } else { &j });
                     return if step > 0.0 {
                         sv.bracketed_root(x, j, x + step, jn)
                     } else {
@@ -746,7 +783,7 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
         if self.accepts(tol, &j) {
             return Some((x, j));
         }
-        sv.side_tol = self.bracket_tol(tol, j.fwd, j.side_p);
+        sv.side_tol = self.bracket_tol(tol, &j);
         sv.local_root(x, j)
     }
 
@@ -872,7 +909,12 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
                 let d2 = j.fwd.tt + j.fwd.pt * dphi;
                 let mut he = (2.0 * h_guard).min(span);
                 // Where the Taylor model of D reaches the target (NaN or infinite if it does not).
-                let h_model = guard_step(gap, j.fwd.t, -d2);
+                // A loosely accepted point lies `resid` off the root: D and D' there are F and
+                // F_t carried to the root along φ (F_φ = −ω₁S ≠ 0 off it), which keeps the aim
+                // as accurate as from an exact root.
+                let gap_m = gap + resid * (j.fwd.p + 0.5 * j.fwd.pp * resid);
+                let d1_m = j.fwd.t + j.fwd.pt * resid;
+                let h_model = guard_step(gap_m, d1_m, -d2);
                 if h_model > h_guard && h_model < he {
                     // Approaching: aim at the model's contact itself.
                     he = h_model;
