@@ -1103,6 +1103,17 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
         Some((tc, p, j))
     }
 
+    /// The point at time `t_n` corrected to the side tolerance, predicted from the corrected
+    /// point (t, φ, jet) ([`predict_phi`]); untraced (the refinement of a contact).
+    fn correct_tight_from(&mut self, t: f64, phi: f64, j: &PairJet, t_n: f64) -> Option<(f64, PairJet)> {
+        self.correct(
+            t_n,
+            predict_phi(phi, j, t_n - t),
+            Tol::Fixed(self.side_tol),
+            &mut NoTrace,
+        )
+    }
+
     /// At a point within tolerance of the target, sharpens the contact time: Newton steps on D
     /// from the safe side (a few, while they stay above the target), then, if one lands beyond
     /// the target, Illinois regula falsi on D(t) − δ between the last safe point and that point.
@@ -1132,12 +1143,7 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
                 if !(d1 < 0.0 && t_n < ts) {
                     break;
                 }
-                let Some((phi_n, jn)) = self.correct(
-                    t_n,
-                    predict_phi(ps, &js, t_n - ts),
-                    Tol::Fixed(self.side_tol),
-                    &mut NoTrace,
-                ) else {
+                let Some((phi_n, jn)) = self.correct_tight_from(ts, ps, &js, t_n) else {
                     break;
                 };
                 if better(&best, &jn) {
@@ -1171,12 +1177,7 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
             if t_n <= ts {
                 break;
             }
-            let Some((phi_n, jn)) = self.correct(
-                t_n,
-                predict_phi(ps, &js, t_n - ts),
-                Tol::Fixed(self.side_tol),
-                &mut NoTrace,
-            ) else {
+            let Some((phi_n, jn)) = self.correct_tight_from(ts, ps, &js, t_n) else {
                 break;
             };
             if better(&best, &jn) {
@@ -1200,12 +1201,7 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
                 if !(tm > ta && tm < tb) {
                     break;
                 }
-                let Some((pm, jm)) = self.correct(
-                    tm,
-                    predict_phi(last.1, &last.2, tm - last.0),
-                    Tol::Fixed(self.side_tol),
-                    &mut NoTrace,
-                ) else {
+                let Some((pm, jm)) = self.correct_tight_from(last.0, last.1, &last.2, tm) else {
                     break;
                 };
                 last = (tm, pm, jm);
