@@ -102,7 +102,7 @@ enum Tol {
 
 /// Halley iterations the corrector tries from the prediction before the bracketed solver.
 const HALLEY_TRIES: usize = 4;
-/// |S| accepted away from contact, as a fraction of the gap F − δ ([`Tracker::side_tol_at`]).
+/// |S| accepted away from contact, as a fraction of the gap F − δ ([`Tracker::loose_side`]).
 const LOOSE_SIDE: f64 = 0.1;
 /// Largest F deficit ω₁S²/(2S_φ) an inexact root may cost away from contact, as a fraction of the
 /// gap F − δ ([`Tracker::loose_side`]).
@@ -1118,9 +1118,10 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
     /// from the safe side (a few, while they stay above the target), then, if one lands beyond
     /// the target, Illinois regula falsi on D(t) − δ between the last safe point and that point.
     /// A start a hair below the target (an aimed step, D ≥ δ − 1e-12·s) first takes Newton steps
-    /// backwards, never before `t_lo` (the previous accepted point), until one is above it. The answer is the sample closest to the target among those with
-    /// D ≥ δ − 1e-12·s (the safe point itself when nothing better is found). The bracket is
-    /// ~gap/|D'| wide, far inside what the guard would step over, so the root found is the first.
+    /// backwards, never before `t_lo` (the previous accepted point), until one is above it. The
+    /// answer is the sample closest to the target among those with D ≥ δ − 1e-12·s (the start
+    /// itself when nothing better is found). The bracket is ~gap/|D'| wide, far inside what the
+    /// guard would step over, so the root found is the first.
     fn refine_hit<T: Tracer>(&mut self, t_lo: f64, t: f64, phi: f64, j: PairJet, trace: &mut T) -> TimeOfImpact {
         let delta = self.opts.target_distance;
         let floor = -CONTACT_FLOOR * self.size;
