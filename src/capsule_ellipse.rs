@@ -105,7 +105,7 @@ impl ConvexCurve for CapsuleEllipse {
             // the circle's point behind the segment (inside the shape, normal turned the wrong
             // way; with r1 ≪ r2 by up to √ε·r2/r1, so that distanceFwd overestimates the gap):
             // the arc starts where |sin φ|·r1 ≥ r2·cos φ, the segment before.
-            let (s, c) = phi.sin_cos();
+            let (s, c) = crate::math::sin_cos(phi);
             let on_arc = s.abs() * r1 >= r2 * c;
             if !on_arc {
                 piece = 2;

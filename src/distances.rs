@@ -104,35 +104,57 @@ impl PairFrame {
 
 /// The relative motion of object1 with respect to object2 under parry's `NonlinearRigidMotion`
 /// of each, ready to produce a [`PairFrame`] at any time.
+///
+/// Angles are kept as unit complex numbers (cos, sin): the rotation at t is the start rotation
+/// composed with R(ωt), as parry's `NonlinearRigidMotion::position_at_time` composes it, so a
+/// frame costs one sine and cosine per spinning angle and no arctangent.
 #[derive(Copy, Clone, Debug, PartialEq)]
 pub struct RelativeMotion {
-    beta0: f64,
+    /// (cos β₀, sin β₀): object1's start rotation relative to object2's, β₀ = α₁(0) − α₂(0).
+    rot_b0: (f64, f64),
     omega: f64,
-    alpha2_0: f64,
+    /// (cos α₂(0), sin α₂(0)): object2's start rotation.
+    rot_a2: (f64, f64),
     omega2: f64,
     dc0: Vector,
     dv: Vector,
     center1: Vector,
     center2: Vector,
-    /// (sin α₂, cos α₂) at t = 0, used when object2 does not spin.
-    sc2_0: (f64, f64),
+}
+
+/// The unit complex number of a rotation (normalised: parry's rotations are unit up to rounding,
+/// or not at all when built unchecked).
+#[inline]
+fn unit_cs(r: &parry2d_f64::math::Rotation) -> (f64, f64) {
+    let (c, s) = (r.cos(), r.sin());
+    let n = (c * c + s * s).sqrt();
+    if n > 0.0 && n.is_finite() {
+        (c / n, s / n)
+    } else {
+        (1.0, 0.0)
+    }
+}
+
+/// The product of two unit complex numbers (cos, sin): the rotation by the sum of the angles.
+#[inline]
+fn compose(a: (f64, f64), b: (f64, f64)) -> (f64, f64) {
+    (a.0 * b.0 - a.1 * b.1, a.1 * b.0 + a.0 * b.1)
 }
 
 impl RelativeMotion {
     /// The relative motion of `m1` (object1) seen from `m2` (object2).
     pub fn new(m1: &NonlinearRigidMotion, m2: &NonlinearRigidMotion) -> Self {
-        let a1 = m1.start.rotation.angle();
-        let a2 = m2.start.rotation.angle();
+        let r1 = unit_cs(&m1.start.rotation);
+        let r2 = unit_cs(&m2.start.rotation);
         Self {
-            beta0: a1 - a2,
+            rot_b0: compose(r1, (r2.0, -r2.1)),
             omega: m1.angvel - m2.angvel,
-            alpha2_0: a2,
+            rot_a2: r2,
             omega2: m2.angvel,
             dc0: m1.start * m1.local_center - m2.start * m2.local_center,
             dv: m1.linvel - m2.linvel,
             center1: m1.local_center,
             center2: m2.local_center,
-            sc2_0: a2.sin_cos(),
         }
     }
 
@@ -164,11 +186,13 @@ impl RelativeMotion {
     /// The frame at time t.
     #[inline]
     pub fn frame(&self, t: f64) -> PairFrame {
-        let (sb, cb) = (self.beta0 + self.omega * t).sin_cos();
-        let (s2, c2) = if self.omega2 == 0.0 {
-            self.sc2_0
+        let (sw, cw) = crate::math::sin_cos(self.omega * t);
+        let (cb, sb) = compose(self.rot_b0, (cw, sw));
+        let (c2, s2) = if self.omega2 == 0.0 {
+            self.rot_a2
         } else {
-            (self.alpha2_0 + self.omega2 * t).sin_cos()
+            let (sw2, cw2) = crate::math::sin_cos(self.omega2 * t);
+            compose(self.rot_a2, (cw2, sw2))
         };
         // R(−α₂) v = (c v_x + s v_y, −s v_x + c v_y)
         let rinv = |v: Vector| Vector::new(c2 * v.x + s2 * v.y, -s2 * v.x + c2 * v.y);

@@ -50,19 +50,19 @@ impl Dual2 {
     /// Sine.
     #[inline]
     pub fn sin(self) -> Self {
-        let (s, c) = self.v.sin_cos();
+        let (s, c) = crate::math::sin_cos(self.v);
         self.chain(s, c, -s)
     }
     /// Cosine.
     #[inline]
     pub fn cos(self) -> Self {
-        let (s, c) = self.v.sin_cos();
+        let (s, c) = crate::math::sin_cos(self.v);
         self.chain(c, -s, -c)
     }
     /// Sine and cosine together (one `sin_cos` of the value).
     #[inline]
     pub fn sin_cos(self) -> (Self, Self) {
-        let (s, c) = self.v.sin_cos();
+        let (s, c) = crate::math::sin_cos(self.v);
         (self.chain(s, c, -s), self.chain(c, -s, -c))
     }
     /// Tangent.

@@ -39,7 +39,7 @@
 //! over small facets).
 
 use crate::curve::ConvexCurve;
-use crate::dispatcher::{own_curve, pair_size, parry_within, pushed_together, route, TOUCH_PUSH};
+use crate::dispatcher::{own_curve, pair_size, parry_within, pushed_together, route, RouteScratch, TOUCH_PUSH};
 use crate::math::{Pose, Real, Vector};
 use crate::parry_shape::{flat_pieces, FLAT_FEATURE_MAX_ANGLE};
 use crate::stationary::StationaryDistance;
@@ -287,7 +287,8 @@ where
             return Ok(());
         }
         // Route once: parry shapes are converted to curves a single time per query.
-        let routed = if ours { Some(route(g1, g2)) } else { None };
+        let mut scratch = RouteScratch::default();
+        let routed = if ours { Some(route(g1, g2, &mut scratch)) } else { None };
         let sd = routed.as_ref().and_then(|r| self.routed_distance(r, pos12));
         match (sd, &routed) {
             (Some(Ok(sd)), Some(r)) => {
