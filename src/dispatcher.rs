@@ -59,7 +59,7 @@ mod inline_polygon;
 use inline_polygon::InlinePolygon;
 use parry2d_f64::shape::{
     Ball, Capsule, ConvexPolygon, Cuboid, HalfSpace, RoundConvexPolygon, RoundCuboid, RoundTriangle, Segment, Shape,
-    Triangle,
+    ShapeType, Triangle,
 };
 
 /// The query dispatcher of this crate: exact smooth-shape queries, parry for everything else.
@@ -110,6 +110,11 @@ impl CurveOf<'_> {
 
 /// This crate's own shapes.
 pub(crate) fn own_curve(s: &dyn Shape) -> Option<&dyn ConvexCurve> {
+    // This crate's shapes are parry `Custom` shapes: one virtual call rules out all others
+    // before the downcasts (two virtual calls each).
+    if s.shape_type() != ShapeType::Custom {
+        return None;
+    }
     if let Some(e) = s.as_shape::<Ellipse>() {
         Some(e)
     } else if let Some(p) = s.as_shape::<RoundedPolygon>() {
@@ -151,14 +156,20 @@ fn polygon_curve<'a>(verts: &[Vector], radius: f64, slot: &'a mut Option<InlineP
 
 /// Any shape this dispatcher can treat as a convex curve.
 pub(crate) fn curve_of<'a>(s: &'a dyn Shape, slot: &'a mut Option<InlinePolygon>) -> Option<CurveOf<'a>> {
-    if let Some(e) = s.as_shape::<Ellipse>() {
-        return Some(CurveOf::Ellipse(e));
-    }
-    if let Some(c) = own_curve(s) {
-        return Some(CurveOf::Borrowed(c));
-    }
-    if let Some(b) = s.as_shape::<Ball>() {
-        return (b.radius > 0.0).then_some(CurveOf::Ball(BallCurve { radius: b.radius }));
+    match s.shape_type() {
+        ShapeType::Custom => {
+            if let Some(e) = s.as_shape::<Ellipse>() {
+                return Some(CurveOf::Ellipse(e));
+            }
+            if let Some(c) = own_curve(s) {
+                return Some(CurveOf::Borrowed(c));
+            }
+        }
+        ShapeType::Ball => {
+            let b = s.as_shape::<Ball>()?;
+            return (b.radius > 0.0).then_some(CurveOf::Ball(BallCurve { radius: b.radius }));
+        }
+        _ => {}
     }
     if let Some(c) = s.as_shape::<Cuboid>() {
         polygon_curve(&box_vertices(c), 0.0, slot)
@@ -282,6 +293,13 @@ impl Route<'_> {
     }
 }
 
+/// The half-space `s` is, if it is one (its type first: one virtual call for the others).
+fn half_space(s: &dyn Shape) -> Option<&HalfSpace> {
+    (s.shape_type() == ShapeType::HalfSpace)
+        .then(|| s.as_shape::<HalfSpace>())
+        .flatten()
+}
+
 /// Chooses how the pair `(g1, g2)` is answered, converting parry shapes to curves when ours.
 pub(crate) fn route<'a>(g1: &'a dyn Shape, g2: &'a dyn Shape, scratch: &'a mut RouteScratch) -> Route<'a> {
     let RouteScratch { first, second } = scratch;
@@ -292,7 +310,7 @@ pub(crate) fn route<'a>(g1: &'a dyn Shape, g2: &'a dyn Shape, scratch: &'a mut R
     if g1.as_composite_shape().is_some() || g2.as_composite_shape().is_some() {
         return Route::Composite;
     }
-    if let Some(hs) = g2.as_shape::<HalfSpace>() {
+    if let Some(hs) = half_space(g2) {
         return match curve_of(g1, first) {
             Some(curve) => Route::HalfSpace {
                 curve,
@@ -302,7 +320,7 @@ pub(crate) fn route<'a>(g1: &'a dyn Shape, g2: &'a dyn Shape, scratch: &'a mut R
             None => Route::Parry { ours },
         };
     }
-    if let Some(hs) = g1.as_shape::<HalfSpace>() {
+    if let Some(hs) = half_space(g1) {
         return match curve_of(g2, second) {
             Some(curve) => Route::HalfSpace {
                 curve,

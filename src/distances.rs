@@ -394,13 +394,15 @@ impl PairPoint {
     /// ```
     ///
     /// with τ₁ = R(−β)τ = −N⊥ (object1's frame); then F_t = d₁_t·N, F_φt = d₁_t·N',
-    /// F_tt = d₁_tt·N, S_t = d₁_t × N, S_φt = ωω₁ρ₂' + d₁_t × N', S_tt = d₁_tt × N, and
-    /// F_φ = d₁·N', F_φφ = d₁_φφ·N + 2d₁_φ·N' + d₁·N'' as in [`eval_point`].
+    /// F_tt = d₁_tt·N, S_t = d₁_t × N, S_φt = ωω₁ρ₂' + d₁_t × N', S_tt = d₁_tt × N, and from
+    /// the identity F_φ = −ω₁S (DESIGN § 2) and its derivative, F_φ = −ω₁S and
+    /// F_φφ = −(ω₁'S + ω₁S_φ) with the point's S and S_φ (the same values as d₁·N' and
+    /// d₁_φφ·N + 2d₁_φ·N' + d₁·N'' up to rounding, without recomputing d₁ and its φ-derivatives).
     #[inline]
     pub fn jet(&self, fr: &PairFrame) -> Option<PairJet> {
         let cp = &self.curve1;
         let sj = &self.support2;
-        let (n, n_p, n_pp) = (cp.normal, cp.d_normal, cp.dd_normal);
+        let (n, n_p) = (cp.normal, cp.d_normal);
         let w1 = cp.normal_turn_rate();
         let om = fr.omega;
         let (rho, rho_p) = (sj.radius_of_curvature, sj.d_radius_of_curvature);
@@ -414,16 +416,11 @@ impl PairPoint {
         // Object1's frame.
         let d_t = fr.unrotate(u_t - perp(u) * om);
         let d_tt = fr.unrotate(u_tt - perp(u_t) * (2.0 * om) - u * (om * om));
-        let d = fr.center1 + fr.unrotate(u) - cp.point;
-        let tau1 = -perp(n);
-        let d_p = tau1 * (rho * w1) - cp.d_point;
-        let k1 = tau1 * rho_p + n * rho;
-        let d_pp = k1 * (w1 * w1) + tau1 * (rho * cp.d_normal_turn_rate()) - cp.dd_point;
         let fwd = Jet2 {
             v: self.fwd,
-            p: d.dot(n_p),
+            p: -w1 * self.side,
             t: d_t.dot(n),
-            pp: d_pp.dot(n) + 2.0 * d_p.dot(n_p) + d.dot(n_pp),
+            pp: -(cp.d_normal_turn_rate() * self.side + w1 * self.side_p),
             pt: d_t.dot(n_p),
             tt: d_tt.dot(n),
         };

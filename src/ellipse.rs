@@ -204,7 +204,14 @@ impl ConvexCurve for Ellipse {
         // The ends of a slightly wider arc, of half-angle asin(w) ≥ w (no trigonometry); it is
         // shorter than π, so it contains a direction with cos ψ = 0 (sin ψ = 0) exactly when the
         // ends' x (y) components differ in sign.
-        let m = m.normalize_or(Vector::X);
+        // Callers pass unit normals: normalise only what is not one already (a length within
+        // 1e-14 of 1 moves cos²ψ by far less than the 1e-12 the arc is widened by).
+        let n2 = m.length_squared();
+        let m = if (n2 - 1.0).abs() <= 1e-14 {
+            m
+        } else {
+            m.normalize_or(Vector::X)
+        };
         let (sw, cw) = (w, (1.0 - w * w).sqrt());
         let e1 = Vector::new(m.x * cw + m.y * sw, m.y * cw - m.x * sw);
         let e2 = Vector::new(m.x * cw - m.y * sw, m.y * cw + m.x * sw);

@@ -532,8 +532,9 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
         let dc = self
             .rel
             .center_offset(t)
-            .length()
-            .max(self.rel.center_offset(t + h).length());
+            .length_squared()
+            .max(self.rel.center_offset(t + h).length_squared())
+            .sqrt();
         let dv = self.dv_len;
         // The axis turns at λ − ωᵢ against shape i; the optimal λ lies between 0, ω₁ and ω₂,
         // so over [t, t + h] the directions stay within these angles of the current ones.
