@@ -300,8 +300,35 @@ fn half_space(s: &dyn Shape) -> Option<&HalfSpace> {
         .flatten()
 }
 
+/// An [`Ellipse`] or a parry `Ball` of positive radius as a curve; `None` for any other shape.
+#[inline]
+fn ellipse_or_ball(s: &dyn Shape) -> Option<CurveOf<'_>> {
+    match s.shape_type() {
+        ShapeType::Custom => s.as_shape::<Ellipse>().map(CurveOf::Ellipse),
+        ShapeType::Ball => {
+            let b = s.as_shape::<Ball>()?;
+            (b.radius > 0.0).then_some(CurveOf::Ball(BallCurve { radius: b.radius }))
+        }
+        _ => None,
+    }
+}
+
 /// Chooses how the pair `(g1, g2)` is answered, converting parry shapes to curves when ours.
 pub(crate) fn route<'a>(g1: &'a dyn Shape, g2: &'a dyn Shape, scratch: &'a mut RouteScratch) -> Route<'a> {
+    // The commonest smooth pairs first: an ellipse with an ellipse or a disc (both strictly
+    // convex, no composite, no half-space), recognised with one shape-type call and one downcast
+    // per side instead of the general checks below.
+    if let (Some(c1), Some(c2)) = (ellipse_or_ball(g1), ellipse_or_ball(g2)) {
+        if matches!(c1, CurveOf::Ellipse(_)) || matches!(c2, CurveOf::Ellipse(_)) {
+            return Route::Curves { c1, c2, swapped: false };
+        }
+    }
+    route_general(g1, g2, scratch)
+}
+
+/// [`route`] without its fast path (every pair; the fast path's answers are these, pinned by
+/// `route_fast_path_agrees_with_the_general_route`).
+fn route_general<'a>(g1: &'a dyn Shape, g2: &'a dyn Shape, scratch: &'a mut RouteScratch) -> Route<'a> {
     let RouteScratch { first, second } = scratch;
     let ours = own_curve(g1).is_some() || own_curve(g2).is_some();
     if !ours {
@@ -1256,6 +1283,46 @@ mod tests {
             .map(|i| unit(2.0 * PI * i as f64 / (inline_polygon::INLINE_VERTICES + 1) as f64))
             .collect();
         assert!(InlinePolygon::from_core_unchecked(&too_many, 0.0).is_none());
+    }
+
+    /// `route`'s shortcut for ellipses and discs answers what the general checks answer: the
+    /// same curves in the same roles, and parry for two discs or a disc of radius 0.
+    #[test]
+    fn route_fast_path_agrees_with_the_general_route() {
+        let e1 = Ellipse::new(0.5, 0.2);
+        let e2 = Ellipse::new(0.1, 0.3);
+        let (b, b0) = (Ball::new(0.25), Ball::new(0.0));
+        let cube = Cuboid::new(Vector::new(0.5, 0.3));
+        let shapes: [&dyn Shape; 5] = [&e1, &e2, &b, &b0, &cube];
+        let describe = |r: Route| match r {
+            Route::Curves { c1, c2, swapped } => {
+                let d = |c: &CurveOf| match c {
+                    CurveOf::Ellipse(e) => format!("ellipse {} {}", e.half_x(), e.half_y()),
+                    CurveOf::Ball(b) => format!("ball {}", b.radius),
+                    CurveOf::Inline(_) | CurveOf::Poly(_) => "polygon".to_string(),
+                    CurveOf::Borrowed(_) => "borrowed".to_string(),
+                };
+                format!("curves {} / {} swapped {swapped}", d(&c1), d(&c2))
+            }
+            Route::HalfSpace { .. } => "half-space".to_string(),
+            Route::Composite => "composite".to_string(),
+            Route::Parry { ours } => format!("parry {ours}"),
+        };
+        let mut fast = 0;
+        for g1 in shapes {
+            for g2 in shapes {
+                let (mut s1, mut s2) = (RouteScratch::default(), RouteScratch::default());
+                let quick = describe(route(g1, g2, &mut s1));
+                let general = describe(route_general(g1, g2, &mut s2));
+                assert_eq!(quick, general);
+                fast += usize::from(matches!(
+                    (ellipse_or_ball(g1), ellipse_or_ball(g2)),
+                    (Some(CurveOf::Ellipse(_)), Some(_)) | (Some(_), Some(CurveOf::Ellipse(_)))
+                ));
+            }
+        }
+        // Ellipse–ellipse (4), ellipse–disc and disc–ellipse (4) take the shortcut.
+        assert_eq!(fast, 8);
     }
 
     /// Which conversion each parry shape gets: on the stack up to `INLINE_VERTICES` vertices.
