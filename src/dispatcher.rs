@@ -157,17 +157,9 @@ fn polygon_curve<'a>(verts: &[Vector], radius: f64, slot: &'a mut Option<InlineP
 /// Any shape this dispatcher can treat as a convex curve.
 pub(crate) fn curve_of<'a>(s: &'a dyn Shape, slot: &'a mut Option<InlinePolygon>) -> Option<CurveOf<'a>> {
     match s.shape_type() {
-        ShapeType::Custom => {
-            if let Some(e) = s.as_shape::<Ellipse>() {
-                return Some(CurveOf::Ellipse(e));
-            }
-            if let Some(c) = own_curve(s) {
-                return Some(CurveOf::Borrowed(c));
-            }
-        }
-        ShapeType::Ball => {
-            let b = s.as_shape::<Ball>()?;
-            return (b.radius > 0.0).then_some(CurveOf::Ball(BallCurve { radius: b.radius }));
+        // An ellipse or a disc as `route`'s fast path takes them, then this crate's other shapes.
+        ShapeType::Custom | ShapeType::Ball => {
+            return ellipse_or_ball(s).or_else(|| own_curve(s).map(CurveOf::Borrowed));
         }
         _ => {}
     }

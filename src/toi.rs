@@ -1452,16 +1452,27 @@ mod tests {
             Box::new(RoundedPolygon::regular(3, 0.6, 0.0)),
         ];
         let mut rng = Lcg(7);
-        let mut checked = 0;
+        let (mut checked, mut spin_free, mut spun_disc) = (0, 0, 0);
         for case in 0..400 {
             let o1 = &*shapes[case % shapes.len()];
             let o2 = &*shapes[(case / shapes.len()) % 3];
             let (mut m1, mut m2) = (random_motion(&mut rng, 3.0, 40.0), random_motion(&mut rng, 3.0, 40.0));
             if case % 4 == 3 {
-                // Neither spins: `guard_bound` answers M = 0 along the fixed axis at once.
-                (m1.angvel, m2.angvel) = (0.0, 0.0);
+                // Neither spins as tracked: `guard_bound` answers M = 0 along the fixed axis at
+                // once. A disc turning about its centre keeps its spin (it is tracked without it).
+                m1.angvel = 0.0;
+                if o2.support_dd_bound() == 0.0 {
+                    m2.local_center = Vector::ZERO;
+                } else {
+                    m2.angvel = 0.0;
+                }
+            } else if case % 4 == 2 {
+                // Only object2 turns: a bound is needed (M = 0 here would be wrong).
+                m1.angvel = 0.0;
             }
             let tr = Tracker::new(o1, &m1, o2, &m2, 0.0, 1.0, &ToiOptions::default()).unwrap();
+            spin_free += usize::from(tr.omega1 == 0.0 && tr.rel.omega2() == 0.0);
+            spun_disc += usize::from(tr.spin2 != 0.0);
             let t = rng.range(0.0, 0.5);
             let phi = rng.range(-3.1, 3.1);
             let Some(j) = eval_pair(o1, o2, &tr.rel.frame(t), phi) else {
@@ -1488,6 +1499,10 @@ mod tests {
             }
         }
         assert!(checked > 10_000);
+        assert!(
+            spin_free >= 100 && spun_disc >= 20,
+            "{spin_free} spin-free pairs, {spun_disc} spun discs"
+        );
     }
 
     #[test]
