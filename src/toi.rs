@@ -77,7 +77,7 @@
 //! the two ends is covered by the guard from both sides. M is first taken with the global
 //! curvature bounds; the bounds local to the step's directions (square roots and divisions) are
 //! computed only when that M limits the step and does not already certify the aim with room to
-//! spare (h_m ≤ 2s_A and s_A + s_B/2 ≥ h_m, s_B estimated from the model's D' at h_m): near the
+//! spare (h_m < 2s_A and s_A + s_B/2 ≥ h_m, s_B estimated from the model's D' at h_m): near the
 //! contact they could not change the step. The certification after the correction uses the M
 //! the step was planned with, whichever it is.
 //!
@@ -941,10 +941,17 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
             let d2 = j.fwd.tt + j.fwd.pt * dphi;
             let gap_m = gap + resid * (j.fwd.p + 0.5 * j.fwd.pp * resid);
             let d1_m = j.fwd.t + j.fwd.pt * resid;
-            let h_model = guard_step(gap_m, d1_m, -d2);
+            // (Only needed when the guard limits the step: the aim below is taken only then.)
+            let h_model = if h_guard < h {
+                guard_step(gap_m, d1_m, -d2)
+            } else {
+                f64::NAN
+            };
             // Near the contact the global bound already certifies an aim at the model's contact
             // with room to spare (s_A + s_B/2 ≥ h_m, s_B ≈ 2|D'|/M from the target level): the
-            // local bounds would change nothing, skip them.
+            // local bounds could not change the step, skip them. (They could only make its
+            // certification, with a smaller M, pass where the global one fails: the step is
+            // then retried as a plain guard step, which computes them.)
             let aim_sure = !retry_plain
                 && h_model > h_guard
                 && h_model < (2.0 * h_guard).min(span)
