@@ -195,7 +195,7 @@ impl RelativeMotion {
             compose(self.rot_a2, (cw2, sw2))
         };
         // R(−α₂) v = (c v_x + s v_y, −s v_x + c v_y)
-        let rinv = |v: Vector| Vector::new(c2 * v.x + s2 * v.y, -s2 * v.x + c2 * v.y);
+        let rinv = |v: Vector| crate::math::rotate_cs(c2, -s2, v);
         let big_q = rinv(self.dc0 + self.dv * t);
         let v = rinv(self.dv);
         let w2 = self.omega2;

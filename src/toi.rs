@@ -649,7 +649,7 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
         if self.spin2 != 0.0 {
             // Object2 turned by ω₂t about its origin since the frame `rel` tracks it in.
             let (s, c) = crate::math::sin_cos(-self.spin2 * t);
-            let rot = |v: Vector| Vector::new(c * v.x - s * v.y, s * v.x + c * v.y);
+            let rot = |v: Vector| crate::math::rotate_cs(c, s, v);
             (point2, normal2) = (rot(point2), rot(normal2));
         }
         TimeOfImpact {
@@ -952,10 +952,10 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
             // local bounds could not change the step, skip them. (They could only make its
             // certification, with a smaller M, pass where the global one fails: the step is
             // then retried as a plain guard step, which computes them.)
-            let aim_sure = !retry_plain
-                && h_model > h_guard
-                && h_model < (2.0 * h_guard).min(span)
-                && (h_model - h_guard) * m <= -(d1_m + d2 * h_model);
+            // A step aims at the model's contact when it lies beyond the guard step s_A but within
+            // the two-sided extension (2·s_A, and the span its bound holds on).
+            let aims = |s_a: f64, span: f64| h_model > s_a && h_model < (2.0 * s_a).min(span);
+            let aim_sure = !retry_plain && aims(h_guard, span) && (h_model - h_guard) * m <= -(d1_m + d2 * h_model);
             if h_guard < h && !aim_sure {
                 // Limited with the global curvature bounds: try the local ones.
                 let span2 = (2.5 * h_guard).min(span);
@@ -973,7 +973,7 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
             let mut aim = false;
             if guard_limited && !retry_plain {
                 let mut he = (2.0 * h_guard).min(span);
-                if h_model > h_guard && h_model < he {
+                if aims(h_guard, span) {
                     // Approaching: aim at the model's contact itself.
                     he = h_model;
                     aim = true;
