@@ -285,60 +285,23 @@ struct Scene {
     threads: Arc<Mutex<HashSet<ThreadId>>>,
 }
 
-/// Bodies of the scene (enough for rapier to split its narrow phase, solver and CCD sweeps
-/// between workers: more than 64 pairs, 64 swept bodies).
-const BODIES: usize = 150;
-
 impl Scene {
-    /// A pile of ellipses, rounded polygons and capsule-ellipses on a box, fast CCD shots into
-    /// it, with `SmoothDispatcher` as the narrow phase; `threads` workers.
+    /// [`world::mixed_pile`] with `SmoothDispatcher` (behind a spy) as the narrow phase, on
+    /// `threads` workers.
     fn new(threads: usize) -> Self {
         let seen = Arc::new(Mutex::new(HashSet::new()));
         let spy = Spy {
             inner: SmoothDispatcher::default(),
             threads: seen.clone(),
         };
-        let mut s = Scene {
-            world: World::new(NarrowPhase::with_query_dispatcher(spy)),
-            handles: Vec::new(),
+        let mut world = World::new(NarrowPhase::with_query_dispatcher(spy));
+        world.pipeline.configure_thread_pool(threads).expect("thread pool");
+        let handles = world::mixed_pile(&mut world);
+        Scene {
+            world,
+            handles,
             threads: seen,
-        };
-        s.world.pipeline.configure_thread_pool(threads).expect("thread pool");
-        s.world.insert(
-            RigidBodyBuilder::fixed().translation(Vector::new(0.0, -0.5)),
-            ColliderBuilder::cuboid(20.0, 0.5),
-        );
-        for i in 0..BODIES {
-            let x = -9.0 + 0.9 * (i % 20) as f64;
-            let y = 1.0 + 0.9 * (i / 20) as f64;
-            let shape = match i % 4 {
-                0 => SharedShape::new(Ellipse::new(0.4, 0.18)),
-                1 => SharedShape::new(RoundedPolygon::regular(3 + i % 5, 0.3, 0.03)),
-                2 => SharedShape::new(CapsuleEllipse::new(0.1, 0.15, 0.2)),
-                _ => SharedShape::new(Ellipse::new(0.25, 0.25)),
-            };
-            let (h, _) = s.world.insert(
-                RigidBodyBuilder::dynamic()
-                    .translation(Vector::new(x, y))
-                    .rotation(0.37 * i as f64)
-                    .angvel(2.0 - 0.1 * i as f64)
-                    .ccd_enabled(i % 2 == 0),
-                ColliderBuilder::new(shape),
-            );
-            s.handles.push(h);
         }
-        for k in 0..3 {
-            let (shot, _) = s.world.insert(
-                RigidBodyBuilder::dynamic()
-                    .translation(Vector::new(-15.0 - 3.0 * k as f64, 1.5 + 1.2 * k as f64))
-                    .linvel(Vector::new(250.0, 0.0))
-                    .angvel(120.0)
-                    .ccd_enabled(true),
-                ColliderBuilder::new(SharedShape::new(Ellipse::new(0.3, 0.08))),
-            );
-            s.handles.push(shot);
-        }
-        s
     }
 
     fn step(&mut self) {
@@ -347,21 +310,7 @@ impl Scene {
 
     /// FNV-1a over the bits of every body's pose and velocities, and those numbers.
     fn state(&self) -> (u64, Vec<[f64; 7]>) {
-        let mut hash = 0xCBF2_9CE4_8422_2325u64;
-        let mut words = Vec::new();
-        for h in &self.handles {
-            let rb = &self.world.bodies[*h];
-            let (t, r) = (rb.translation(), rb.rotation());
-            let w = [t.x, t.y, r.re, r.im, rb.linvel().x, rb.linvel().y, rb.angvel()];
-            for x in w {
-                for b in x.to_bits().to_le_bytes() {
-                    hash ^= b as u64;
-                    hash = hash.wrapping_mul(0x100_0000_01B3);
-                }
-            }
-            words.push(w);
-        }
-        (hash, words)
+        world::state_hash(&self.world, &self.handles)
     }
 }
 
@@ -402,7 +351,7 @@ fn rapier_parallel_pipeline_with_the_smooth_dispatcher() {
     }
     println!(
         "rapier parallel, {STEPS} steps, {} bodies, final-state hashes (1 worker: the dispatcher called from {callers1} thread):",
-        BODIES + 3
+        world::MIXED_PILE_BODIES + 3
     );
     for (k, v) in &hashes {
         println!("  {k}: {v:016x}");
