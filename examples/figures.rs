@@ -21,12 +21,12 @@
 //! * `fig6_appendix_d`: the heptagon spinning at 30 rad/s against an ellipse: the shapes up to the
 //!   impact and distanceSide(φ, t) with the tracked path.
 
+use parry2d_f64::math::{Pose, Vector};
 use parry2d_f64::query::NonlinearRigidMotion;
 use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
-use smooth_ccd2d::distances::{eval_pair, PairFrame, RelativeMotion};
-use smooth_ccd2d::math::{Pose, Vector};
+use smooth_ccd2d::{eval_pair, PairFrame};
 use smooth_ccd2d::{
     stationary_distance, time_of_impact_traced, CapsuleEllipse, ConvexCurve, DistanceOptions, Ellipse, RoundedPolygon,
     ToiOptions, ToiStatus, TraceEvent,
@@ -402,7 +402,6 @@ fn side_fwd_grids(
     t: (f64, f64),
     (nx, ny): (usize, usize),
 ) -> (Grid, Grid) {
-    let rel = RelativeMotion::new(m1, m2);
     let mut side = Grid {
         x: (-PI, PI),
         y: t,
@@ -415,7 +414,7 @@ fn side_fwd_grids(
         ..side
     };
     for j in 0..ny {
-        let fr = rel.frame(side.yj(j));
+        let fr = PairFrame::at_time(m1, m2, side.yj(j));
         for i in 0..nx {
             match eval_pair(o1, o2, &fr, side.xi(i)) {
                 Some(jet) => {

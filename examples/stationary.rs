@@ -4,8 +4,8 @@
 //!
 //! Run: `cargo run --release --example stationary`
 
+use parry2d_f64::math::{Pose, Vector};
 use parry2d_f64::query::NonlinearRigidMotion;
-use smooth_ccd2d::math::{Pose, Vector};
 use smooth_ccd2d::{stationary_distance, time_of_impact, DistanceOptions, Ellipse, RoundedPolygon, ToiOptions};
 
 fn main() {

@@ -1,5 +1,7 @@
-//! Errors for invalid shape parameters, and the range of lengths a shape accepts.
+//! The crate's errors: [`ShapeError`] (a shape could not be built) and [`QueryError`] (a query
+//! could not run), and the range of lengths a shape accepts.
 
+use crate::numerics::math::Vector;
 use core::fmt;
 
 /// The smallest positive length a shape accepts (semi-axis, radius, circumradius, corner radius,
@@ -133,7 +135,7 @@ pub(crate) fn non_negative(name: &'static str, value: f64) -> Result<f64, ShapeE
 
 /// Checks the vertices of a polygon: every coordinate within ±[`MAX_LENGTH`] and the polygon's
 /// size (its largest vertex distance from the origin) at least [`MIN_LENGTH`].
-pub(crate) fn vertices_in_range(vertices: &[crate::math::Vector]) -> Result<(), ShapeError> {
+pub(crate) fn vertices_in_range(vertices: &[Vector]) -> Result<(), ShapeError> {
     let mut size = 0.0f64;
     for v in vertices {
         let m = v.x.abs().max(v.y.abs());
@@ -154,76 +156,47 @@ pub(crate) fn vertices_in_range(vertices: &[crate::math::Vector]) -> Result<(), 
     Ok(())
 }
 
+/// Why a query could not run. No query of the crate panics or returns a non-finite number: bad
+/// input gives one of these. When several apply, [`crate::time_of_impact`] reports
+/// `NotStrictlyConvex`, then `NonFinite`, then `EmptyWindow`; [`crate::stationary_distance`] reports
+/// `NonFinite` before `NotStrictlyConvex`. [`crate::SmoothDispatcher`] turns them into parry's
+/// `Unsupported` (except `EmptyWindow`: no hit).
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub enum QueryError {
+    /// A number of the input is NaN or infinite: a pose (`pos12`, a motion's start pose or local
+    /// centre), a linear or angular velocity, a time of the window, a half-space's normal, or an
+    /// option (the target distance or a tolerance; a negative one too).
+    NonFinite,
+    /// Object2 must be strictly convex (eq. 4 needs a unique point per normal):
+    /// [`crate::stationary_distance`] needs `obj2` strictly convex, [`crate::time_of_impact`] one of the
+    /// two shapes (it swaps the roles itself).
+    NotStrictlyConvex,
+    /// Every input is finite but a shape or a pose evaluated to a non-finite value: positions or
+    /// velocities so large that they overflow (beyond about 1e150), a [`crate::BallCurve`] built
+    /// with a non-finite or non-positive radius (its field is public), a user curve that returns
+    /// NaN. The crate's own constructors refuse the lengths that would do this
+    /// ([`crate::MIN_LENGTH`], [`crate::MAX_LENGTH`]).
+    Degenerate,
+    /// The time window is reversed (`end_time < start_time`). An empty window
+    /// (`start_time == end_time`) is not an error: the answer is at `start_time`,
+    /// [`crate::ToiStatus::PenetratingAtStart`] or [`crate::ToiStatus::NoHit`].
+    EmptyWindow,
+}
+
+impl fmt::Display for QueryError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            QueryError::NonFinite => "a pose, motion, time or option is not finite",
+            QueryError::NotStrictlyConvex => "object2 must be strictly convex",
+            QueryError::Degenerate => "a shape evaluated to a non-finite value",
+            QueryError::EmptyWindow => "the time window is reversed",
+        })
+    }
+}
+
+impl std::error::Error for QueryError {}
+
 /// A tolerance the queries accept: finite and ≥ 0.
-fn tolerance_ok(x: f64) -> bool {
+pub(crate) fn tolerance_ok(x: f64) -> bool {
     x.is_finite() && x >= 0.0
-}
-
-impl crate::stationary::DistanceOptions {
-    /// Whether the tolerances are finite and ≥ 0 (otherwise the queries answer
-    /// [`crate::QueryError::NonFinite`]). Caps of 0 are allowed: the query then ends at once with
-    /// `OutOfIterations`.
-    pub(crate) fn is_valid(&self) -> bool {
-        tolerance_ok(self.side_tolerance) && tolerance_ok(self.distance_tolerance)
-    }
-}
-
-impl crate::toi::ToiOptions {
-    /// Whether the target distance and the tolerances are finite and ≥ 0 (otherwise the queries
-    /// answer [`crate::QueryError::NonFinite`]).
-    pub(crate) fn is_valid(&self) -> bool {
-        tolerance_ok(self.target_distance)
-            && tolerance_ok(self.distance_tolerance)
-            && tolerance_ok(self.side_tolerance)
-            && self.distance.is_valid()
-    }
-}
-
-impl crate::stationary::StationaryDistance {
-    /// Whether every number of the answer is finite (the public queries answer
-    /// [`crate::QueryError::Degenerate`] otherwise).
-    pub(crate) fn is_finite(&self) -> bool {
-        self.distance.is_finite()
-            && self.phi.is_finite()
-            && self.point1.is_finite()
-            && self.point2.is_finite()
-            && self.normal1.is_finite()
-            && self.normal2.is_finite()
-    }
-}
-
-impl crate::toi::TimeOfImpact {
-    /// Whether every number of the answer is finite (the public queries answer
-    /// [`crate::QueryError::Degenerate`] otherwise).
-    pub(crate) fn is_finite(&self) -> bool {
-        self.time.is_finite()
-            && self.distance.is_finite()
-            && self.distance_rate.is_finite()
-            && self.point1.is_finite()
-            && self.point2.is_finite()
-            && self.normal1.is_finite()
-            && self.normal2.is_finite()
-    }
-}
-
-/// `r`, or [`crate::QueryError::Degenerate`] when the answer holds a non-finite number: the last
-/// guard of the public queries (finite but absurd input, e.g. a rotation of 1e300, can overflow
-/// where no earlier check looks).
-pub(crate) fn finite_toi(
-    r: Result<crate::toi::TimeOfImpact, crate::QueryError>,
-) -> Result<crate::toi::TimeOfImpact, crate::QueryError> {
-    match r {
-        Ok(t) if !t.is_finite() => Err(crate::QueryError::Degenerate),
-        r => r,
-    }
-}
-
-/// As [`finite_toi`] for a stationary distance.
-pub(crate) fn finite_distance(
-    r: Result<crate::stationary::StationaryDistance, crate::QueryError>,
-) -> Result<crate::stationary::StationaryDistance, crate::QueryError> {
-    match r {
-        Ok(d) if !d.is_finite() => Err(crate::QueryError::Degenerate),
-        r => r,
-    }
 }

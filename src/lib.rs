@@ -14,7 +14,7 @@
 //! * **Roles**: *object1* is any convex curve; *object2* must be strictly convex (its contact
 //!   point comes from the normal, eq. 4). Computations happen in object2's local frame.
 //! * **The three distances**, with d = S₂(−N) − P₁(φ) in object2's frame:
-//!   distanceEuclidean = |d|, distanceFwd F = d·N, distanceSide S = d × N ([`distances`]).
+//!   distanceEuclidean = |d|, distanceFwd F = d·N, distanceSide S = d × N ([`eval_pair`]).
 //!   max over φ of F is the signed distance (negative: penetration depth).
 //! * **`pos12`** is parry's: the pose of shape 2 in shape 1's local frame. Witness points and
 //!   normals are returned in each shape's own local frame; `normal1` points from shape 1
@@ -27,36 +27,31 @@
 //! [rapier2d-f64]: https://docs.rs/rapier2d-f64
 #![warn(missing_docs)]
 
-pub mod ball_curve;
-pub mod capsule_ellipse;
-pub mod curve;
-pub mod custom_curve;
-pub mod dispatcher;
-pub mod distances;
-pub mod ellipse;
-pub mod error;
-pub mod halfspace;
-pub mod jet;
-pub mod manifold;
-pub mod math;
-pub mod parry_shape;
-mod polygon_pieces;
-pub mod rounded_polygon;
-pub mod stationary;
-pub mod toi;
+mod curve;
+mod dispatcher;
+mod error;
+mod numerics;
+mod parry_shape;
+mod query;
+mod shapes;
 
-pub use ball_curve::BallCurve;
-pub use capsule_ellipse::CapsuleEllipse;
-pub use curve::{wrap_phi, ConvexCurve, CurvePoint, SupportJet};
-pub use custom_curve::CustomCurve;
-pub use dispatcher::SmoothDispatcher;
-pub use distances::{PairFrame, PairJet};
-pub use ellipse::Ellipse;
-pub use error::ShapeError;
-pub use jet::{Dual2, Jet2, JetVec};
-pub use rounded_polygon::RoundedPolygon;
-pub use stationary::{stationary_distance, DistanceOptions, DistanceStatus, QueryError, StationaryDistance};
-pub use toi::{
+pub use curve::{ConvexCurve, CurvePoint, SupportJet};
+pub use dispatcher::{SmoothDispatcher, StartContactPolicy};
+pub use error::{QueryError, ShapeError, MAX_LENGTH, MIN_LENGTH};
+pub use numerics::angle::wrap_phi;
+pub use numerics::jet::{Dual2, Jet2, JetVec};
+pub use numerics::motion::PairFrame;
+pub use parry_shape::FLAT_FEATURE_MAX_ANGLE;
+pub use query::halfspace::{halfspace_distance, time_of_impact_halfspace};
+pub use query::pair::{eval_pair, eval_pair_at, PairJet};
+pub use query::stationary::{stationary_distance, DistanceOptions, DistanceStatus, StationaryDistance};
+pub use query::toi::{
     bounding_circles_part, time_of_impact, time_of_impact_traced, TimeOfImpact, ToiCost, ToiOptions, ToiStatus,
     TraceEvent,
 };
+pub use shapes::{BallCurve, CapsuleEllipse, CustomCurve, Ellipse, RoundedPolygon};
+
+/// The README's examples, compiled and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;

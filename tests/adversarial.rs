@@ -25,7 +25,7 @@ use parry2d_f64::query::{NonlinearRigidMotion, PointQuery, QueryDispatcher};
 use parry2d_f64::shape::{Ball, HalfSpace};
 use proptest::prelude::*;
 use reliability::{describe, generate, run_case, Case, ShapeSpec, WILD};
-use smooth_ccd2d::halfspace::{halfspace_distance, time_of_impact_halfspace};
+use smooth_ccd2d::{halfspace_distance, time_of_impact_halfspace};
 use smooth_ccd2d::{
     stationary_distance, time_of_impact, BallCurve, CapsuleEllipse, ConvexCurve, DistanceOptions, DistanceStatus,
     Ellipse, QueryError, RoundedPolygon, ShapeError, SmoothDispatcher, ToiOptions, ToiStatus,
@@ -416,7 +416,7 @@ fn still(x: f64, y: f64, a: f64) -> NonlinearRigidMotion {
 
 #[test]
 fn constructors_refuse_every_bad_number_with_a_shape_error() {
-    use smooth_ccd2d::error::{MAX_LENGTH, MIN_LENGTH};
+    use smooth_ccd2d::{MAX_LENGTH, MIN_LENGTH};
     let bad = [
         f64::NAN,
         f64::INFINITY,
@@ -626,29 +626,12 @@ fn queries_with_non_finite_inputs_return_the_documented_errors() {
                 Err(QueryError::NonFinite)
             );
         }
-        for o in [
-            DistanceOptions {
-                side_tolerance: x,
-                ..opts
-            },
-            DistanceOptions {
-                distance_tolerance: x,
-                ..opts
-            },
-        ] {
+        for o in [opts.with_side_tolerance(x), opts.with_distance_tolerance(x)] {
             assert_eq!(stationary_distance(&e, &b, &ok_pose, &o), Err(QueryError::NonFinite));
         }
     }
     assert_eq!(
-        stationary_distance(
-            &e,
-            &b,
-            &ok_pose,
-            &DistanceOptions {
-                side_tolerance: -1e-10,
-                ..opts
-            }
-        ),
+        stationary_distance(&e, &b, &ok_pose, &opts.with_side_tolerance(-1e-10)),
         Err(QueryError::NonFinite)
     );
     assert_eq!(
@@ -712,25 +695,10 @@ fn queries_with_non_finite_inputs_return_the_documented_errors() {
         assert_eq!(toi(&m1, x, 2.0, &topts).map(|r| r.time), Err(QueryError::NonFinite));
         assert_eq!(toi(&m1, 0.0, x, &topts).map(|r| r.time), Err(QueryError::NonFinite));
         for o in [
-            ToiOptions {
-                target_distance: x,
-                ..topts
-            },
-            ToiOptions {
-                distance_tolerance: x,
-                ..topts
-            },
-            ToiOptions {
-                side_tolerance: x,
-                ..topts
-            },
-            ToiOptions {
-                distance: DistanceOptions {
-                    side_tolerance: x,
-                    ..opts
-                },
-                ..topts
-            },
+            topts.with_target_distance(x),
+            topts.with_distance_tolerance(x),
+            topts.with_side_tolerance(x),
+            topts.with_distance_options(opts.with_side_tolerance(x)),
         ] {
             assert_eq!(toi(&m1, 0.0, 2.0, &o).map(|r| r.time), Err(QueryError::NonFinite));
             let hs = time_of_impact_halfspace(&e, &m1, &HalfSpace::new(Vector::Y), &m2, 0.0, 2.0, &o);
@@ -748,16 +716,7 @@ fn queries_with_non_finite_inputs_return_the_documented_errors() {
         );
     }
     assert_eq!(
-        toi(
-            &m1,
-            0.0,
-            2.0,
-            &ToiOptions {
-                target_distance: -0.1,
-                ..topts
-            }
-        )
-        .map(|r| r.time),
+        toi(&m1, 0.0, 2.0, &topts.with_target_distance(-0.1)).map(|r| r.time),
         Err(QueryError::NonFinite)
     );
     // Neither shape strictly convex: NotStrictlyConvex, even before NonFinite.
@@ -833,10 +792,7 @@ fn empty_and_reversed_windows_have_documented_answers() {
     let m2 = still(0.0, 0.0, 0.0);
     for t in [-5.0, 0.0, 0.7, 1e6] {
         for stop in [true, false] {
-            let o = ToiOptions {
-                stop_at_penetration: stop,
-                ..ToiOptions::default()
-            };
+            let o = ToiOptions::default().with_stop_at_penetration(stop);
             // Apart: NoHit at t0.
             let r = time_of_impact(&b, &m1, &e, &m2, t, t, &o).unwrap();
             assert_eq!(r.status, ToiStatus::NoHit, "t = {t}");
@@ -940,7 +896,7 @@ fn parry_cast_with_an_absurd_spin_is_refused_not_hung() {
         }
     }
     assert!(t.elapsed() < Duration::from_secs(1), "{:?}", t.elapsed());
-    assert_eq!(smooth_ccd2d::dispatcher::PARRY_MAX_STEPS, 1e4);
+    assert_eq!(smooth_ccd2d::SmoothDispatcher::PARRY_MAX_STEPS, 1e4);
 }
 
 /// parry asserts that margins are non-negative (closest points of two balls, composite shapes)
@@ -1052,10 +1008,7 @@ fn time_of_impact_evaluation_cap_bounds_a_query() {
         Vector::new(9859440092410.965, 4645061266106.172),
         -38.941440575250624,
     );
-    let o = ToiOptions {
-        stop_at_penetration: false,
-        ..ToiOptions::default()
-    };
+    let o = ToiOptions::default().with_stop_at_penetration(false);
     let t = Instant::now();
     let r = time_of_impact(&e1, &m1, &e2, &m2, 0.0, 0.16588369270313294, &o).unwrap();
     let dt = t.elapsed();
@@ -1169,10 +1122,7 @@ fn shapes_touching_exactly_at_t0() {
                 for stop in [true, false] {
                     let m1 = NonlinearRigidMotion::new(Pose::new(Vector::ZERO, 0.0), Vector::ZERO, Vector::ZERO, w);
                     let m2 = NonlinearRigidMotion::new(pos12, Vector::ZERO, v * s, 0.0);
-                    let o = ToiOptions {
-                        stop_at_penetration: stop,
-                        ..ToiOptions::default()
-                    };
+                    let o = ToiOptions::default().with_stop_at_penetration(stop);
                     let r = time_of_impact(&**a, &m1, &b, &m2, 0.0, 1.0, &o).unwrap();
                     if stop || v.x < 0.0 {
                         // Stopping at contacts, or approaching: the start.
@@ -1524,10 +1474,7 @@ fn answers_that_would_hold_a_nan_are_degenerate() {
         0.0,
     );
     let c = CapsuleEllipse::new(0.0003918556189137731, 0.0002938917141853298, 0.0004898195236422163);
-    let o = ToiOptions {
-        stop_at_penetration: false,
-        ..ToiOptions::default()
-    };
+    let o = ToiOptions::default().with_stop_at_penetration(false);
     match time_of_impact_halfspace(&c, &m, &hs, &mh, -3.0, 0.0, &o) {
         Err(QueryError::Degenerate) => {}
         Ok(r) => assert!(
@@ -1610,10 +1557,7 @@ fn thin_capsule_arc_against_thin_ellipse_hit_is_on_target() {
     };
     let c = CapsuleEllipse::new(*r1, *r2, *r3);
     let e = Ellipse::new(*a, *b);
-    let o = ToiOptions {
-        stop_at_penetration: case.stop,
-        ..ToiOptions::default()
-    };
+    let o = ToiOptions::default().with_stop_at_penetration(case.stop);
     let r = time_of_impact(&c, &case.m1, &e, &case.m2, case.t0, case.t1, &o).unwrap();
     let size = c.bounding_radius().max(e.bounding_radius());
     let truth = reference::reference_toi(&c, &case.m1, &e, &case.m2, case.t0, case.t1, 0.0);

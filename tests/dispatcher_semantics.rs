@@ -128,7 +128,7 @@ fn stop_at_penetration_semantics_follow_the_design() {
         .unwrap()
         .unwrap();
     assert!((hit.time_of_impact - 0.005).abs() < 1e-9, "{}", hit.time_of_impact);
-    assert!(hit.time_of_impact >= smooth_ccd2d::dispatcher::START_NUDGE);
+    assert!(hit.time_of_impact >= smooth_ccd2d::StartContactPolicy::START_NUDGE);
     let creeping = NonlinearRigidMotion::new(
         Pose::new(Vector::new(0.7, 0.0), 0.0),
         Vector::ZERO,

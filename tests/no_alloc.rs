@@ -96,10 +96,7 @@ fn separated_time_of_impact_and_distance_allocate_nothing() {
     for class in CLASSES {
         for seed in 0..SEEDS {
             let s = generate(class, seed);
-            let topts = ToiOptions {
-                target_distance: s.target,
-                ..ToiOptions::default()
-            };
+            let topts = ToiOptions::default().with_target_distance(s.target);
             let (r, n, bytes) =
                 counted(|| time_of_impact(s.curve1(), &s.motion1, s.curve2(), &s.motion2, s.t0, s.t1, &topts));
             assert!(r.is_ok(), "{}", s.describe());
@@ -241,10 +238,7 @@ fn print_allocations_of_time_of_impact_starting_in_contact() {
         let m1 = NonlinearRigidMotion::new(Pose::rotation(0.1), Vector::ZERO, Vector::ZERO, 1.0);
         let m2 = NonlinearRigidMotion::new(start2, Vector::ZERO, Vector::new(v, 0.0), -2.0);
         for stop in [true, false] {
-            let opts = ToiOptions {
-                stop_at_penetration: stop,
-                ..ToiOptions::default()
-            };
+            let opts = ToiOptions::default().with_stop_at_penetration(stop);
             let (r, n, b) = counted(|| time_of_impact(&e1, &m1, &e2, &m2, 0.0, 1.0, &opts));
             let r = r.expect("valid query");
             println!("| {label} | {stop} | {:?} | {n} ({b} B) |", r.status);

@@ -154,7 +154,7 @@ fn try_constructors_reject_bad_numbers_without_panicking() {
     );
     run_property("try constructors reject bad numbers", strategy, |(a, b, n)| {
         // Lengths must be finite, positive and within [MIN_LENGTH, MAX_LENGTH].
-        let ok = |x: f64| (smooth_ccd2d::error::MIN_LENGTH..=smooth_ccd2d::error::MAX_LENGTH).contains(&x);
+        let ok = |x: f64| (smooth_ccd2d::MIN_LENGTH..=smooth_ccd2d::MAX_LENGTH).contains(&x);
         let e = Ellipse::try_new(a, b);
         prop_assert_eq!(e.is_ok(), ok(a) && ok(b));
         let p = RoundedPolygon::try_regular(n, a, b.abs());

@@ -622,7 +622,7 @@ fn scenario_classes_hit_about_half_the_time_and_the_reference_is_consistent() {
         for (sc, r) in scs.iter().zip(&refs) {
             let size = sc.size();
             if let RefOutcome::Hit { time, crossed } = r.outcome {
-                // At the reported time: target − 1e-12 s ≤ D ≤ target + tol (DESIGN § 4).
+                // At the reported time: target − 1e-12 s ≤ D ≤ target + tol (the `Hit` contract of `ToiStatus`).
                 let d = sc.distance_at(time) - sc.target;
                 assert!(
                     d >= -1e-12 * size && d <= r.tol,

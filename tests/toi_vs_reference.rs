@@ -19,10 +19,7 @@ fn cases() -> usize {
 }
 
 fn ours(s: &Scenario) -> TimeOfImpact {
-    let opts = ToiOptions {
-        target_distance: s.target,
-        ..ToiOptions::default()
-    };
+    let opts = ToiOptions::default().with_target_distance(s.target);
     time_of_impact(s.curve1(), &s.motion1, s.curve2(), &s.motion2, s.t0, s.t1, &opts).expect("valid scenario")
 }
 

@@ -3,13 +3,13 @@
 //! converts parry shapes without allocating.
 //!
 //! It is [`RoundedPolygon`](crate::RoundedPolygon) with fixed-capacity arrays instead of `Vec`s; both
-//! evaluate through [`crate::polygon_pieces`], so they give bit-identical answers
+//! evaluate through [`crate::curve::polygon_pieces`], so they give bit-identical answers
 //! (`inline_polygon_matches_rounded_polygon_bit_for_bit` in the dispatcher's tests). Polygons with
 //! more than [`INLINE_VERTICES`] vertices are converted to a `RoundedPolygon` instead.
 
+use crate::curve::polygon_pieces::{layout, LayoutScalars, PolygonPieces};
 use crate::curve::{ConvexCurve, CurvePoint};
-use crate::math::Vector;
-use crate::polygon_pieces::{layout, LayoutScalars, PolygonPieces};
+use crate::numerics::math::Vector;
 
 /// The most core vertices an [`InlinePolygon`] holds.
 pub(crate) const INLINE_VERTICES: usize = 16;

@@ -277,7 +277,7 @@ pub fn speed_bound(
     (motion1.linvel - motion2.linvel).length() + motion1.angvel.abs() * r1 + motion2.angvel.abs() * r2
 }
 
-/// The size s of a pair as in DESIGN § 4: the larger bounding radius about the local origins.
+/// The size s of a pair of the crate's tolerances: the larger bounding radius about the local origins.
 pub fn pair_size(shape1: &dyn ConvexCurve, shape2: &dyn ConvexCurve) -> f64 {
     shape1.bounding_radius().max(shape2.bounding_radius())
 }

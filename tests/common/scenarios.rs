@@ -224,7 +224,7 @@ impl Scenario {
     pub fn curve2(&self) -> &dyn ConvexCurve {
         self.shape2.curve()
     }
-    /// The size s of DESIGN § 4: the larger bounding radius of the two shapes.
+    /// The size s of the crate's tolerances: the larger bounding radius of the two shapes.
     pub fn size(&self) -> f64 {
         self.curve1().bounding_radius().max(self.curve2().bounding_radius())
     }

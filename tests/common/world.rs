@@ -1,6 +1,7 @@
 //! A rapier world driven by `PhysicsPipeline::step`: the sets, the pipeline and one step. One
 //! harness for the rapier tests (`tests/rapier_integration.rs`, `tests/threads.rs`) and the pile
 //! benchmark (`benches/support/pile.rs`); each wraps it with what it records.
+#![allow(dead_code)]
 
 use rapier2d_f64::prelude::*;
 

@@ -16,13 +16,13 @@ use parry2d_f64::shape::{
     Ball, Capsule, Compound, ConvexPolygon, Cuboid, HalfSpace, RoundConvexPolygon, Segment, Shape, SharedShape,
     Triangle,
 };
-use smooth_ccd2d::error::{MAX_LENGTH, MIN_LENGTH};
-use smooth_ccd2d::halfspace::{halfspace_distance, time_of_impact_halfspace};
+use smooth_ccd2d::{halfspace_distance, time_of_impact_halfspace};
 use smooth_ccd2d::{
     stationary_distance, time_of_impact, BallCurve, CapsuleEllipse, ConvexCurve, CustomCurve, DistanceOptions,
     DistanceStatus, Ellipse, QueryError, RoundedPolygon, ShapeError, SmoothDispatcher, StationaryDistance,
     TimeOfImpact, ToiOptions, ToiStatus,
 };
+use smooth_ccd2d::{MAX_LENGTH, MIN_LENGTH};
 use std::f64::consts::PI;
 use std::sync::Arc;
 
@@ -1037,11 +1037,9 @@ fn check_toi_value(cx: &mut Ctx, what: &str, r: &TimeOfImpact, t0: f64, t1: f64)
 fn check_toi(cx: &mut Ctx, c1: &dyn ConvexCurve, c2: &dyn ConvexCurve) {
     let case = cx.case;
     let (t0, t1) = (case.t0, case.t1);
-    let opts = ToiOptions {
-        target_distance: case.target,
-        stop_at_penetration: case.stop,
-        ..ToiOptions::default()
-    };
+    let opts = ToiOptions::default()
+        .with_target_distance(case.target)
+        .with_stop_at_penetration(case.stop);
     let r = time_of_impact(c1, &case.m1, c2, &case.m2, t0, t1, &opts);
     let finite_in = motion_finite(&case.m1)
         && motion_finite(&case.m2)
@@ -1162,11 +1160,9 @@ fn check_halfspace(cx: &mut Ctx, c: &dyn ConvexCurve, hs: &HalfSpace, curve_firs
     } else {
         (&case.m2, &case.m1)
     };
-    let opts = ToiOptions {
-        target_distance: case.target,
-        stop_at_penetration: case.stop,
-        ..ToiOptions::default()
-    };
+    let opts = ToiOptions::default()
+        .with_target_distance(case.target)
+        .with_stop_at_penetration(case.stop);
     let r = time_of_impact_halfspace(c, mc, hs, mh, case.t0, case.t1, &opts);
     let finite_in = motion_finite(mc)
         && motion_finite(mh)

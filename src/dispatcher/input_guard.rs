@@ -12,8 +12,8 @@
 //!   (a negative size), or a margin (prediction, `max_dist`) that is negative or NaN;
 //! * after: any non-finite number in parry's answer.
 
-use crate::math::{Pose, Real};
-use crate::toi::motion_is_finite;
+use crate::numerics::math::{Pose, Real};
+use crate::numerics::motion::motion_is_finite;
 use parry2d_f64::query::{
     ClosestPoints, Contact, ContactManifold, NonlinearRigidMotion, ShapeCastHit, ShapeDistance, ShapeIntersection,
     Unsupported,
@@ -147,7 +147,7 @@ pub(crate) fn finite<T: AllFinite>(r: Result<T, Unsupported>) -> Result<T, Unsup
 /// The guards of a nonlinear cast handed to parry (`parry_cast_nonlinear`, and the composite
 /// helper, which casts bounding balls itself): `Unsupported` for non-finite motions or times,
 /// poses and shapes refused by [`pose_ok`] and [`shapes_ok`], positions leaving the range within
-/// the window, and windows parry would need more than [`super::PARRY_MAX_STEPS`] steps, turns
+/// the window, and windows parry would need more than [`super::SmoothDispatcher::PARRY_MAX_STEPS`] steps, turns
 /// or travels to cross; `Ok(false)` for a reversed window (no hit); `Ok(true)` to go on.
 pub(crate) fn cast_window_ok(
     m1: &NonlinearRigidMotion,
@@ -179,7 +179,7 @@ pub(crate) fn cast_window_ok(
         let step = ang.min(lin).min((t1 - t0) / 10.0);
         // A negative step (a shape with a negative size, an angular thickness above π) walks
         // backwards for ever.
-        let few_steps = (t1 - t0) / step <= super::PARRY_MAX_STEPS;
+        let few_steps = (t1 - t0) / step <= super::SmoothDispatcher::PARRY_MAX_STEPS;
         if step < 0.0 || (step != 0.0 && !few_steps) {
             return Err(Unsupported);
         }
@@ -188,7 +188,9 @@ pub(crate) fn cast_window_ok(
         let size = g1.compute_local_bounding_sphere().radius + g2.compute_local_bounding_sphere().radius;
         let turns = (m2.angvel - m1.angvel).abs() * (t1 - t0) / core::f64::consts::TAU;
         let travel = (m2.linvel - m1.linvel).length() * (t1 - t0) / size;
-        if !(turns <= super::PARRY_MAX_STEPS && (travel <= super::PARRY_MAX_STEPS || size.is_nan())) {
+        if !(turns <= super::SmoothDispatcher::PARRY_MAX_STEPS
+            && (travel <= super::SmoothDispatcher::PARRY_MAX_STEPS || size.is_nan()))
+        {
             return Err(Unsupported);
         }
     }

@@ -1,218 +1,25 @@
 //! The three distances of the specification — distanceEuclidean, distanceFwd, distanceSide —
 //! with their gradient and Hessian in (φ, t) (eq. 6).
 //!
-//! Everything is computed in object2's local frame. At time t object1's boundary point and
-//! outward normal there are
-//!
-//! ```text
-//! P(φ, t) = q(t) + R(β(t))·(P₁(φ) − c₁),     N(φ, t) = R(β(t))·N₁(φ),
-//! ```
-//!
-//! where c₁ is object1's rotation centre (its `local_center`), β = α₁ − α₂ the relative angle
-//! (β' = ω = ω₁ − ω₂) and q(t) = R(−α₂)(C₁ − C₂) + c₂ the position of object1's rotation centre
-//! (C₁, C₂ the world rotation centres, moving linearly). With m = −N and S₂ object2's support
-//! point (eq. 4):
+//! Everything is computed in object2's local frame, where object1's boundary point and normal
+//! at (φ, t) are placed by a [`PairFrame`] (module docs of `numerics::motion`). With m = −N and
+//! S₂ object2's support point (eq. 4):
 //!
 //! ```text
 //! d = S₂(m) − P,   F = d·N,   S = d × N,   E = |d|.
 //! ```
 //!
 //! Derivatives: ψ = angle(m) moves with ∂ψ/∂φ = ω₁(φ) = N₁ × N₁', ∂ψ/∂t = ω; S₂ moves along its
-//! tangent τ = m⊥ with dS₂/dψ = ρ₂τ and d²S₂/dψ² = ρ₂'τ − ρ₂m. q' and q'' follow from
-//! Q = R(−α₂)ΔC: Q' = −ω₂Q⊥ + V, Q'' = −ω₂²Q − 2ω₂V⊥ with V = R(−α₂)ΔC'. All products are
-//! carried out in [`Jet2`] arithmetic.
+//! tangent τ = m⊥ with dS₂/dψ = ρ₂τ and d²S₂/dψ² = ρ₂'τ − ρ₂m. All products are carried out in
+//! [`Jet2`] arithmetic.
 //!
-//! Identities the tests pin (DESIGN § 2): ∂F/∂φ = −ω₁·S, and at S = 0 ∂S/∂φ = ω₁(ρ₁ + ρ₂ + F).
+//! Identities the tests pin (docs/theory.md, "The gap function"): ∂F/∂φ = −ω₁·S, and at S = 0
+//! ∂S/∂φ = ω₁(ρ₁ + ρ₂ + F).
 
 use crate::curve::{ConvexCurve, CurvePoint, SupportJet};
-use crate::jet::{Jet2, JetVec};
-use crate::math::{cross, perp, Pose, Vector};
-use parry2d_f64::query::NonlinearRigidMotion;
-
-/// Object1's placement in object2's frame at one time t, with the time derivatives the jets need.
-#[derive(Copy, Clone, Debug, PartialEq)]
-pub struct PairFrame {
-    /// cos β(t).
-    pub cos_b: f64,
-    /// sin β(t).
-    pub sin_b: f64,
-    /// ω = dβ/dt.
-    pub omega: f64,
-    /// Object1's rotation centre c₁ in its own frame.
-    pub center1: Vector,
-    /// q(t): object1's rotation centre in object2's frame.
-    pub q: Vector,
-    /// dq/dt.
-    pub q_t: Vector,
-    /// d²q/dt².
-    pub q_tt: Vector,
-    /// The time t.
-    pub time: f64,
-}
-
-impl PairFrame {
-    /// A fixed configuration: `pos12` is the pose of object2 in object1's frame (parry's
-    /// convention). Time derivatives are zero.
-    pub fn from_pos12(pos12: &Pose) -> Self {
-        let pos21 = pos12.inverse();
-        Self {
-            cos_b: pos21.rotation.cos(),
-            sin_b: pos21.rotation.sin(),
-            omega: 0.0,
-            center1: Vector::ZERO,
-            q: pos21.translation,
-            q_t: Vector::ZERO,
-            q_tt: Vector::ZERO,
-            time: 0.0,
-        }
-    }
-
-    /// Rotates a vector of object1's frame into object2's frame.
-    #[inline]
-    pub fn rotate(&self, v: Vector) -> Vector {
-        Vector::new(self.cos_b * v.x - self.sin_b * v.y, self.sin_b * v.x + self.cos_b * v.y)
-    }
-
-    /// Rotates a vector of object2's frame into object1's frame.
-    #[inline]
-    pub fn unrotate(&self, v: Vector) -> Vector {
-        Vector::new(
-            self.cos_b * v.x + self.sin_b * v.y,
-            -self.sin_b * v.x + self.cos_b * v.y,
-        )
-    }
-
-    /// Maps a point of object1's frame into object2's frame.
-    #[inline]
-    pub fn to_frame2(&self, p1: Vector) -> Vector {
-        self.q + self.rotate(p1 - self.center1)
-    }
-
-    /// Maps a point of object2's frame into object1's frame.
-    #[inline]
-    pub fn to_frame1(&self, p2: Vector) -> Vector {
-        self.center1 + self.unrotate(p2 - self.q)
-    }
-
-    /// The pose of object2 in object1's frame (parry's `pos12`) at this time.
-    pub fn pos12(&self) -> Pose {
-        // x₂ = q + R(x₁ − c₁)  ⇔  x₁ = Rᵀ(x₂ − q) + c₁.
-        let rot = parry2d_f64::math::Rotation::from_cos_sin_unchecked(self.cos_b, -self.sin_b);
-        Pose::from_parts(self.center1 - rot.transform_vector(self.q), rot)
-    }
-}
-
-/// The relative motion of object1 with respect to object2 under parry's `NonlinearRigidMotion`
-/// of each, ready to produce a [`PairFrame`] at any time.
-///
-/// Angles are kept as unit complex numbers (cos, sin): the rotation at t is the start rotation
-/// composed with R(ωt), as parry's `NonlinearRigidMotion::position_at_time` composes it, so a
-/// frame costs one sine and cosine per spinning angle and no arctangent.
-#[derive(Copy, Clone, Debug, PartialEq)]
-pub struct RelativeMotion {
-    /// (cos β₀, sin β₀): object1's start rotation relative to object2's, β₀ = α₁(0) − α₂(0).
-    rot_b0: (f64, f64),
-    omega: f64,
-    /// (cos α₂(0), sin α₂(0)): object2's start rotation.
-    rot_a2: (f64, f64),
-    omega2: f64,
-    dc0: Vector,
-    dv: Vector,
-    center1: Vector,
-    center2: Vector,
-}
-
-/// The unit complex number of a rotation (normalised: parry's rotations are unit up to rounding,
-/// or not at all when built unchecked).
-#[inline]
-fn unit_cs(r: &parry2d_f64::math::Rotation) -> (f64, f64) {
-    let (c, s) = (r.cos(), r.sin());
-    let n = (c * c + s * s).sqrt();
-    if n > 0.0 && n.is_finite() {
-        (c / n, s / n)
-    } else {
-        (1.0, 0.0)
-    }
-}
-
-/// The product of two unit complex numbers (cos, sin): the rotation by the sum of the angles.
-#[inline]
-fn compose(a: (f64, f64), b: (f64, f64)) -> (f64, f64) {
-    (a.0 * b.0 - a.1 * b.1, a.1 * b.0 + a.0 * b.1)
-}
-
-impl RelativeMotion {
-    /// The relative motion of `m1` (object1) seen from `m2` (object2).
-    pub fn new(m1: &NonlinearRigidMotion, m2: &NonlinearRigidMotion) -> Self {
-        let r1 = unit_cs(&m1.start.rotation);
-        let r2 = unit_cs(&m2.start.rotation);
-        Self {
-            rot_b0: compose(r1, (r2.0, -r2.1)),
-            omega: m1.angvel - m2.angvel,
-            rot_a2: r2,
-            omega2: m2.angvel,
-            dc0: m1.start * m1.local_center - m2.start * m2.local_center,
-            dv: m1.linvel - m2.linvel,
-            center1: m1.local_center,
-            center2: m2.local_center,
-        }
-    }
-
-    /// The relative angular velocity ω = ω₁ − ω₂.
-    pub fn omega(&self) -> f64 {
-        self.omega
-    }
-
-    /// Object2's angular velocity.
-    pub fn omega2(&self) -> f64 {
-        self.omega2
-    }
-
-    /// World-frame offset between the rotation centres, C₁(t) − C₂(t) = ΔC₀ + ΔV·t.
-    pub fn center_offset(&self, t: f64) -> Vector {
-        self.dc0 + self.dv * t
-    }
-
-    /// Relative linear velocity ΔV of the rotation centres (world frame).
-    pub fn center_velocity(&self) -> Vector {
-        self.dv
-    }
-
-    /// Object1's and object2's rotation centres in their own frames.
-    pub fn centers(&self) -> (Vector, Vector) {
-        (self.center1, self.center2)
-    }
-
-    /// The frame at time t.
-    #[inline]
-    pub fn frame(&self, t: f64) -> PairFrame {
-        let (sw, cw) = crate::math::sin_cos(self.omega * t);
-        let (cb, sb) = compose(self.rot_b0, (cw, sw));
-        let (c2, s2) = if self.omega2 == 0.0 {
-            self.rot_a2
-        } else {
-            let (sw2, cw2) = crate::math::sin_cos(self.omega2 * t);
-            compose(self.rot_a2, (cw2, sw2))
-        };
-        // R(−α₂) v = (c v_x + s v_y, −s v_x + c v_y)
-        let rinv = |v: Vector| crate::math::rotate_cs(c2, -s2, v);
-        let big_q = rinv(self.dc0 + self.dv * t);
-        let v = rinv(self.dv);
-        let w2 = self.omega2;
-        let q_t = -perp(big_q) * w2 + v;
-        let q_tt = -big_q * (w2 * w2) - perp(v) * (2.0 * w2);
-        PairFrame {
-            cos_b: cb,
-            sin_b: sb,
-            omega: self.omega,
-            center1: self.center1,
-            q: big_q + self.center2,
-            q_t,
-            q_tt,
-            time: t,
-        }
-    }
-}
+use crate::numerics::jet::{Jet2, JetVec};
+use crate::numerics::math::{cross, perp, Vector};
+use crate::numerics::motion::PairFrame;
 
 /// distanceFwd, distanceSide and distanceEuclidean with gradient and Hessian in (φ, t), and the
 /// geometry behind them, at one (φ, t).
@@ -395,7 +202,7 @@ impl PairPoint {
     ///
     /// with τ₁ = R(−β)τ = −N⊥ (object1's frame); then F_t = d₁_t·N, F_φt = d₁_t·N',
     /// F_tt = d₁_tt·N, S_t = d₁_t × N, S_φt = ωω₁ρ₂' + d₁_t × N', S_tt = d₁_tt × N, and from
-    /// the identity F_φ = −ω₁S (DESIGN § 2) and its derivative, F_φ = −ω₁S and
+    /// the identity F_φ = −ω₁S (docs/theory.md § 5) and its derivative, F_φ = −ω₁S and
     /// F_φφ = −(ω₁'S + ω₁S_φ) with the point's S and S_φ (the same values as d₁·N' and
     /// d₁_φφ·N + 2d₁_φ·N' + d₁·N'' up to rounding, without recomputing d₁ and its φ-derivatives).
     #[inline]
@@ -505,7 +312,10 @@ pub(crate) fn eval_point<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized>(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::numerics::math::Pose;
+    use crate::numerics::motion::RelativeMotion;
     use crate::{BallCurve, CapsuleEllipse, Ellipse, RoundedPolygon};
+    use parry2d_f64::query::NonlinearRigidMotion;
 
     fn motion(x: f64, y: f64, a: f64, vx: f64, vy: f64, w: f64, c: Vector) -> NonlinearRigidMotion {
         NonlinearRigidMotion::new(Pose::new(Vector::new(x, y), a), c, Vector::new(vx, vy), w)
@@ -528,7 +338,7 @@ mod tests {
         let nl = p2.rotation.inverse_transform_vector(nw);
         let s2 = o2.support_jet(-nl).unwrap().point;
         let d = s2 - pl;
-        (d.dot(nl), crate::math::cross(d, nl))
+        (d.dot(nl), crate::numerics::math::cross(d, nl))
     }
 
     fn check_pair(o1: &dyn ConvexCurve, o2: &dyn ConvexCurve) {
@@ -597,7 +407,7 @@ mod tests {
                     (j.side.pt - (spp - spm - smp + smm) / (4.0 * h * h)).abs() < tol2 * rel(j.side.pt),
                     "S_φt"
                 );
-                // Identity ∂F/∂φ = −ω₁ S (DESIGN § 2).
+                // Identity ∂F/∂φ = −ω₁ S (docs/theory.md § 5).
                 let w = j.curve1.normal_turn_rate();
                 assert!((j.fwd.p + w * j.side.v).abs() < 1e-12 * (1.0 + j.fwd.p.abs()));
                 // E² = F² + S² and E = |d|.

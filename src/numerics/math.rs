@@ -1,6 +1,6 @@
 //! Small vector helpers over parry's glam types.
 
-pub use parry2d_f64::math::{Pose, Real, Rotation, Vector};
+pub use parry2d_f64::math::{Pose, Real, Vector};
 
 /// 2D cross product `a × b = a_x b_y − a_y b_x`.
 #[inline]
@@ -35,4 +35,35 @@ pub fn unit(a: f64) -> Vector {
 #[inline]
 pub fn rotate_cs(c: f64, s: f64, v: Vector) -> Vector {
     Vector::new(c * v.x - s * v.y, s * v.x + c * v.y)
+}
+
+/// `d` normalised; +x for a zero, non-finite or NaN vector. Robust to under/overflow.
+#[inline]
+pub(crate) fn unit_or_x(d: Vector) -> Vector {
+    if !d.is_finite() {
+        return Vector::X;
+    }
+    let m = d.x.abs().max(d.y.abs());
+    if m == 0.0 {
+        return Vector::X;
+    }
+    let s = d / m;
+    s / s.length()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn unit_or_x_survives_tiny_huge_and_bad_vectors() {
+        assert_eq!(unit_or_x(Vector::ZERO), Vector::X);
+        assert_eq!(unit_or_x(Vector::new(f64::NAN, 1.0)), Vector::X);
+        assert_eq!(unit_or_x(Vector::new(f64::INFINITY, 1.0)), Vector::X);
+        let t = unit_or_x(Vector::new(3e-320, 4e-320));
+        assert!((t - Vector::new(0.6, 0.8)).length() < 1e-3);
+        let h = unit_or_x(Vector::new(3e307, 4e307));
+        assert!((h - Vector::new(0.6, 0.8)).length() < 1e-15);
+        assert!((unit_or_x(unit(0.3) * 7.0) - unit(0.3)).length() < 1e-15);
+    }
 }

@@ -1,14 +1,19 @@
 //! The piece layout of a convex polygon dilated by a radius r ≥ 0 (module docs of
-//! [`crate::rounded_polygon`]): corner 0, edge 0, corner 1, … from φ = −π, the maths of the
+//! [`crate::RoundedPolygon`]): corner 0, edge 0, corner 1, … from φ = −π, the maths of the
 //! boundary on each piece, and the inverse normal map.
 //!
 //! One implementation over borrowed slices, shared by [`crate::RoundedPolygon`] (which stores the
 //! slices in `Vec`s) and the dispatcher's stack-allocated polygon for parry's shapes (fixed
 //! arrays), so that both answer with the same floating-point operations.
 
-use crate::curve::{ccw_angle, wrap_phi, CurvePoint};
-use crate::math::{perp, Vector};
+use crate::curve::CurvePoint;
+use crate::numerics::angle::{ccw_angle, wrap_phi};
+use crate::numerics::math::{perp, Vector};
 use core::f64::consts::PI;
+
+/// A unit normal within √(this) = 1e-15 of an edge normal is that edge's normal (the edge's
+/// whole φ-interval is its range).
+const SAME_NORMAL_SQ: f64 = 1e-30;
 
 /// The scalars of a layout ([`layout`]).
 #[derive(Copy, Clone, Debug, PartialEq)]
@@ -135,14 +140,14 @@ impl<'a> PolygonPieces<'a> {
             let e = self.edge_normals[i];
             let span = ccw_angle(e_prev, e);
             let a = ccw_angle(e_prev, m);
-            if a == 0.0 || (m - e_prev).length_squared() < 1e-30 {
+            if a == 0.0 || (m - e_prev).length_squared() < SAME_NORMAL_SQ {
                 return edge_range((i + n - 1) % n);
             }
             if a < span {
                 let phi = self.piece_starts[2 * i] + a * self.scalars.k * self.scalars.corner_scale;
                 return (phi, phi);
             }
-            if a == span || (m - e).length_squared() < 1e-30 {
+            if a == span || (m - e).length_squared() < SAME_NORMAL_SQ {
                 return edge_range(i);
             }
         }

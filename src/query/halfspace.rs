@@ -6,7 +6,7 @@
 //! distance is D = n·(X(p) − o) where p = S(−n) is the curve's support point in direction −n
 //! (in the curve's frame, exact through [`ConvexCurve::phi_range_of_normal`]).
 //!
-//! The time of impact steps with a guard in the spirit of [`crate::toi`]'s. Here the only axis
+//! The time of impact steps with a guard in the spirit of the tracker's ([`crate::time_of_impact`]). Here the only axis
 //! is the half-space normal, and D(t) = min over body points x of G(x, t), the height of x above
 //! the boundary. For each body point G(x, t) = n(t)·ΔC(t) + n·R(α_c − α_h)(x − c_c) + n·c_h, so
 //! |G''| ≤ M = 2|ω_h||ΔV| + ω_h²·max|ΔC| + (ω_c − ω_h)²·r_c (r_c bounds |x − c_c|), and
@@ -23,11 +23,17 @@
 //! Newton's.
 
 use crate::curve::ConvexCurve;
-use crate::math::{perp, Pose, Vector};
-use crate::stationary::{DistanceStatus, QueryError, StationaryDistance};
-use crate::toi::{motion_is_finite, TimeOfImpact, ToiCost, ToiOptions, ToiStatus};
+use crate::error::QueryError;
+use crate::numerics::math::{perp, Pose, Vector};
+use crate::numerics::motion::motion_is_finite;
+use crate::query::stationary::{finite_distance, DistanceStatus, StationaryDistance};
+use crate::query::toi::{finite_toi, TimeOfImpact, ToiCost, ToiOptions, ToiStatus};
 use parry2d_f64::query::NonlinearRigidMotion;
 use parry2d_f64::shape::HalfSpace;
+
+/// How far below the target a reported contact may be, relative to the size (the `Hit`
+/// contract: D ≥ δ − 1e-12·s).
+const CONTACT_FLOOR: f64 = 1e-12;
 
 /// Signed distance between `curve` and the half-space `hs`; `pos12` is shape 2's pose in shape 1's
 /// frame and `curve_first` tells whether shape 1 is the curve. Results in the caller's order.
@@ -68,7 +74,7 @@ pub fn halfspace_distance(
         newton_iterations: 0,
         evaluations: 1,
     };
-    crate::error::finite_distance(Ok(if curve_first {
+    finite_distance(Ok(if curve_first {
         base
     } else {
         StationaryDistance {
@@ -153,7 +159,7 @@ pub fn time_of_impact_halfspace(
     t1: f64,
     opts: &ToiOptions,
 ) -> Result<TimeOfImpact, QueryError> {
-    crate::error::finite_toi(toi_halfspace(curve, mc, hs, mh, t0, t1, opts))
+    finite_toi(toi_halfspace(curve, mc, hs, mh, t0, t1, opts))
 }
 
 fn toi_halfspace(
@@ -243,7 +249,7 @@ fn toi_halfspace(
                 let sn = sample(curve, mc, hs, mh, tn);
                 cost.evaluations += 1;
                 let g = sn.dist - delta;
-                if g >= -1e-12 * size && g <= tol {
+                if g >= -CONTACT_FLOOR * size && g <= tol {
                     return Ok(finish(&sn, ToiStatus::Hit, cost));
                 }
             }

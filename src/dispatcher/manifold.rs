@@ -38,13 +38,15 @@
 //! contacts while the pose changes by less than its thresholds, which makes smooth bodies roll
 //! over small facets).
 
+use super::input_guard;
+use super::parry_fallback::{pair_size, parry_within, pushed_together, TOUCH_PUSH};
+use super::route::{own_curve, route, RouteScratch};
+use crate::curve::pieces::{flat_pieces, piece_index, piece_is_flat};
 use crate::curve::ConvexCurve;
-use crate::dispatcher::{own_curve, pair_size, parry_within, pushed_together, route, RouteScratch, TOUCH_PUSH};
-use crate::math::{Pose, Real, Vector};
-use crate::parry_shape::{flat_pieces, FLAT_FEATURE_MAX_ANGLE};
-use crate::stationary::StationaryDistance;
+use crate::numerics::math::{Pose, Real, Vector};
+use crate::parry_shape::FLAT_FEATURE_MAX_ANGLE;
+use crate::query::stationary::StationaryDistance;
 use crate::SmoothDispatcher;
-use core::f64::consts::PI;
 use parry2d_f64::query::details::{
     contact_manifolds_composite_shape_composite_shape, contact_manifolds_composite_shape_shape,
     contact_manifolds_heightfield_composite_shape, contact_manifolds_heightfield_shape_shapes,
@@ -58,31 +60,6 @@ use parry2d_f64::query::{
 };
 use parry2d_f64::shape::{HalfSpace, PackedFeatureId, Shape, ShapeType};
 
-/// Index of the piece holding φ (pieces start at the breakpoints; the last one wraps).
-fn piece_index(bp: &[f64], phi: f64) -> usize {
-    if bp.is_empty() {
-        return 0;
-    }
-    let phi = crate::curve::wrap_phi(phi);
-    let k = bp.partition_point(|&b| b <= phi);
-    if k == 0 {
-        bp.len() - 1
-    } else {
-        k - 1
-    }
-}
-
-/// Whether piece `k` is flat (its normal does not turn at its middle).
-fn piece_is_flat(c: &dyn ConvexCurve, bp: &[f64], k: usize) -> bool {
-    let s = bp[k];
-    let e = if k + 1 < bp.len() { bp[k + 1] } else { bp[0] + 2.0 * PI };
-    if e.partial_cmp(&s) != Some(core::cmp::Ordering::Greater) {
-        return false;
-    }
-    let cp = c.eval(0.5 * (s + e));
-    cp.is_finite() && cp.d_normal.length() <= 1e-12 && cp.speed() > 0.0
-}
-
 /// The feature id of the point of `c` whose outward normal is `n` (see the module docs).
 fn curve_fid(c: &dyn ConvexCurve, n: Vector) -> PackedFeatureId {
     let bp = c.breakpoints();
@@ -91,7 +68,7 @@ fn curve_fid(c: &dyn ConvexCurve, n: Vector) -> PackedFeatureId {
     }
     let (lo, hi) = c.phi_range_of_normal(n);
     let k = piece_index(bp, 0.5 * (lo + hi));
-    if piece_is_flat(c, bp, k) {
+    if piece_is_flat(c, k) {
         PackedFeatureId::face(k as u32)
     } else {
         PackedFeatureId::vertex(2 * k as u32)
@@ -128,7 +105,7 @@ fn flat_on_halfspace(c: &dyn ConvexCurve, nc: Vector, support: Vector) -> Option
     let id_start = PackedFeatureId::vertex(2 * k + 1);
     let id_end = PackedFeatureId::vertex(2 * ((k + 1) % nb) + 1);
     // The support point replaces the end it has passed (it lies on a neighbouring piece).
-    let t = crate::math::perp(f.normal);
+    let t = crate::numerics::math::perp(f.normal);
     let (s0, s1, sp) = (f.start.dot(t), f.end.dot(t), support.dot(t));
     let tol = 1e-12 * c.bounding_radius().abs().max(f64::MIN_POSITIVE);
     let support_id = || curve_fid(c, nc);
@@ -308,7 +285,7 @@ where
             // Not ours, or our distance failed: parry (through the polygonal feature maps),
             // under the dispatcher's guards (no NaN pose or shape in, no NaN contact out).
             _ => {
-                if !(crate::dispatcher::guard::pose_ok(pos12) && crate::dispatcher::guard::shapes_ok(g1, g2)) {
+                if !(input_guard::pose_ok(pos12) && input_guard::shapes_ok(g1, g2)) {
                     manifold.clear();
                     return Err(Unsupported);
                 }
@@ -332,7 +309,7 @@ where
                         manifold,
                     )?;
                 }
-                if !crate::dispatcher::guard::AllFinite::all_finite(manifold) {
+                if !input_guard::AllFinite::all_finite(manifold) {
                     manifold.clear();
                     return Err(Unsupported);
                 }

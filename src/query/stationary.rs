@@ -2,7 +2,7 @@
 //! "Distance functions analysis" of the specification).
 //!
 //! For every φ, F(φ) = d·N is the gap between the two shapes along the axis N(φ): a lower bound
-//! on the signed distance, and its maximum over φ *is* the signed distance (DESIGN § 2). Since
+//! on the signed distance, and its maximum over φ *is* the signed distance (docs/theory.md, § 3). Since
 //! ∂F/∂φ = −ω₁·S, the maxima of F are roots of S where S goes from negative to positive.
 //!
 //! 1. **Local solve.** Starting from the normal that points from object1's centre to
@@ -10,7 +10,7 @@
 //!    Halley/Newton steps on S are taken inside it, falling back to bisection whenever a step
 //!    leaves the bracket or fails to halve it (derivatives jump at piece ends).
 //! 2. **Global test.** If the root has F > 0 it is the global maximum (the positive part of F is
-//!    concave in the normal angle: a theorem, DESIGN § 2) and the shapes are apart. If
+//!    concave in the normal angle: a theorem, docs/theory.md § 4) and the shapes are apart. If
 //!    0 ≥ F > −(r₁ + r₂), with rᵢ the smallest radii of curvature, it is also global: the same
 //!    theorem applied to the shapes shrunk by rᵢ (a shallow penetration).
 //! 3. **Otherwise** (penetration, or a bad start on a very thin ellipse) a branch and bound over
@@ -22,15 +22,21 @@
 //!    value found (by more than the tolerance) are dropped; an interval with a sign change of S
 //!    gets a local solve. Concave kinks (sharp corners) only lower F, so the bound stays valid.
 
-use crate::curve::{ccw_angle, ConvexCurve};
-use crate::distances::{eval_point, PairFrame, PairPoint};
-use crate::math::{unit, Pose, Vector};
+use crate::curve::ConvexCurve;
+use crate::error::{tolerance_ok, QueryError};
+use crate::numerics::angle::{ccw_angle, wrap_phi};
+use crate::numerics::math::{unit, Pose, Vector};
+use crate::numerics::motion::PairFrame;
+use crate::query::pair::PairPoint;
+use crate::query::solver::Solver;
 use core::f64::consts::PI;
-use core::fmt;
 
 /// Tolerances and caps of the stationary distance. Tolerances are relative to the size s of the
 /// pair (the larger bounding radius).
+///
+/// Build them from the default with the `with_*` methods (the struct is `#[non_exhaustive]`).
 #[derive(Copy, Clone, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct DistanceOptions {
     /// |distanceSide| at which a root is accepted, relative to s (default 1e-10: an error δ in φ
     /// costs only O(δ²) in distance).
@@ -56,7 +62,7 @@ impl Default for DistanceOptions {
 }
 
 /// How a stationary distance query ([`stationary_distance`], and
-/// [`crate::halfspace::halfspace_distance`]) ended. Whatever the status, every number of the
+/// [`crate::query::halfspace::halfspace_distance`]) ended. Whatever the status, every number of the
 /// [`StationaryDistance`] is finite and the normals are unit vectors; bad input is a
 /// [`QueryError`] instead. s below is the size of the pair (the larger bounding radius).
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
@@ -80,46 +86,6 @@ pub enum DistanceStatus {
     /// adversarial tests (`tests/adversarial.rs`).
     OutOfIterations,
 }
-
-/// Why a query could not run. No query of the crate panics or returns a non-finite number: bad
-/// input gives one of these. When several apply, [`crate::time_of_impact`] reports
-/// `NotStrictlyConvex`, then `NonFinite`, then `EmptyWindow`; [`stationary_distance`] reports
-/// `NonFinite` before `NotStrictlyConvex`. `SmoothDispatcher` turns them into parry's
-/// `Unsupported` (except `EmptyWindow`: no hit).
-#[derive(Copy, Clone, Debug, PartialEq, Eq)]
-pub enum QueryError {
-    /// A number of the input is NaN or infinite: a pose (`pos12`, a motion's start pose or local
-    /// centre), a linear or angular velocity, a time of the window, a half-space's normal, or an
-    /// option (the target distance or a tolerance; a negative one too).
-    NonFinite,
-    /// Object2 must be strictly convex (eq. 4 needs a unique point per normal):
-    /// [`stationary_distance`] needs `obj2` strictly convex, [`crate::time_of_impact`] one of the
-    /// two shapes (it swaps the roles itself).
-    NotStrictlyConvex,
-    /// Every input is finite but a shape or a pose evaluated to a non-finite value: positions or
-    /// velocities so large that they overflow (beyond about 1e150), a [`crate::BallCurve`] built
-    /// with a non-finite or non-positive radius (its field is public), a user curve that returns
-    /// NaN. The crate's own constructors refuse the lengths that would do this
-    /// ([`crate::error::MIN_LENGTH`], [`crate::error::MAX_LENGTH`]).
-    Degenerate,
-    /// The time window is reversed (`end_time < start_time`). An empty window
-    /// (`start_time == end_time`) is not an error: the answer is at `start_time`,
-    /// [`crate::ToiStatus::PenetratingAtStart`] or [`crate::ToiStatus::NoHit`].
-    EmptyWindow,
-}
-
-impl fmt::Display for QueryError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(match self {
-            QueryError::NonFinite => "a pose, motion, time or option is not finite",
-            QueryError::NotStrictlyConvex => "object2 must be strictly convex",
-            QueryError::Degenerate => "a shape evaluated to a non-finite value",
-            QueryError::EmptyWindow => "the time window is reversed",
-        })
-    }
-}
-
-impl std::error::Error for QueryError {}
 
 /// The result of [`stationary_distance`].
 #[derive(Copy, Clone, Debug, PartialEq)]
@@ -158,122 +124,70 @@ impl StationaryDistance {
     }
 }
 
-/// A root solver's state, shared with the time of impact's corrector.
-pub(crate) struct Solver<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> {
-    pub obj1: &'a A,
-    pub obj2: &'a B,
-    pub frame: PairFrame,
-    pub side_tol: f64,
-    pub max_iter: usize,
-    pub evaluations: usize,
-    pub newton: usize,
+impl DistanceOptions {
+    /// With this side tolerance (relative to the size).
+    pub fn with_side_tolerance(mut self, side_tolerance: f64) -> Self {
+        self.side_tolerance = side_tolerance;
+        self
+    }
+
+    /// With this distance tolerance of the branch and bound (relative to the size).
+    pub fn with_distance_tolerance(mut self, distance_tolerance: f64) -> Self {
+        self.distance_tolerance = distance_tolerance;
+        self
+    }
+
+    /// With this cap on iterations of one local solve.
+    pub fn with_max_local_iterations(mut self, max_local_iterations: usize) -> Self {
+        self.max_local_iterations = max_local_iterations;
+        self
+    }
+
+    /// With this cap on pair evaluations of one query.
+    pub fn with_max_evaluations(mut self, max_evaluations: usize) -> Self {
+        self.max_evaluations = max_evaluations;
+        self
+    }
+
+    /// Whether the tolerances are finite and ≥ 0 (otherwise the queries answer
+    /// [`QueryError::NonFinite`]). Caps of 0 are allowed: the query then ends at once with
+    /// `OutOfIterations`.
+    pub(crate) fn is_valid(&self) -> bool {
+        tolerance_ok(self.side_tolerance) && tolerance_ok(self.distance_tolerance)
+    }
 }
 
-impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Solver<'a, A, B> {
-    #[inline]
-    pub fn eval(&mut self, phi: f64) -> Option<PairPoint> {
-        self.evaluations += 1;
-        eval_point(self.obj1, self.obj2, &self.frame, phi)
+impl StationaryDistance {
+    /// Whether every number of the answer is finite (the public queries answer
+    /// [`QueryError::Degenerate`] otherwise).
+    pub(crate) fn is_finite(&self) -> bool {
+        self.distance.is_finite()
+            && self.phi.is_finite()
+            && self.point1.is_finite()
+            && self.point2.is_finite()
+            && self.normal1.is_finite()
+            && self.normal2.is_finite()
     }
+}
 
-    /// Solves S(φ) = 0 with S increasing, starting at `phi0` whose evaluation is `j0`: grows a
-    /// bracket in the direction the sign of S points to, then safeguarded Halley.
-    pub fn local_root(&mut self, phi0: f64, j0: PairPoint) -> Option<(f64, PairPoint)> {
-        if j0.side.abs() <= self.side_tol {
-            return Some((phi0, j0));
-        }
-        // Grow a bracket: S < 0 ⇒ root ahead; S > 0 ⇒ root behind.
-        let dir = if j0.side < 0.0 { 1.0 } else { -1.0 };
-        let mut step = if j0.side_p > 0.0 {
-            (j0.side.abs() / j0.side_p).clamp(1e-6, 0.5)
-        } else {
-            0.1
-        };
-        let (mut a, mut ja) = (phi0, j0);
-        let mut travelled = 0.0;
-        loop {
-            let b = a + dir * step * 1.5;
-            let jb = self.eval(b)?;
-            if (jb.side > 0.0) == (dir > 0.0) || jb.side == 0.0 {
-                let (lo, jlo, hi, jhi) = if dir > 0.0 { (a, ja, b, jb) } else { (b, jb, a, ja) };
-                return self.bracketed_root(lo, jlo, hi, jhi);
-            }
-            travelled += step * 1.5;
-            if travelled > 2.0 * PI || self.evaluations > 10_000 {
-                return None;
-            }
-            a = b;
-            ja = jb;
-            step = (step * 2.0).min(0.5);
-        }
-    }
-
-    /// Safeguarded Halley on S inside [lo, hi] with S(lo) ≤ 0 ≤ S(hi): each iterate replaces the
-    /// end of the bracket with the same sign of S; an iterate outside the bracket, or one after an
-    /// iteration that did not halve |S|, is replaced by the midpoint (derivatives jump at piece
-    /// ends, where Halley stalls or oscillates).
-    pub fn bracketed_root(
-        &mut self,
-        mut lo: f64,
-        mut jlo: PairPoint,
-        mut hi: f64,
-        mut jhi: PairPoint,
-    ) -> Option<(f64, PairPoint)> {
-        if jlo.side.abs() <= self.side_tol {
-            return Some((lo, jlo));
-        }
-        if jhi.side.abs() <= self.side_tol {
-            return Some((hi, jhi));
-        }
-        // Start from the end with the smaller |S|.
-        let (mut x, mut jx) = if jlo.side.abs() < jhi.side.abs() {
-            (lo, jlo)
-        } else {
-            (hi, jhi)
-        };
-        // |S| before the last iteration: an iteration that did not halve it is followed by a
-        // bisection (the Halley iterate is stalling or oscillating).
-        let mut last_s = f64::INFINITY;
-        for _ in 0..self.max_iter {
-            let (s, s1, s2) = (jx.side, jx.side_p, jx.side_pp);
-            let mut cand = f64::NAN;
-            if s1 > 0.0 {
-                let denom = 2.0 * s1 * s1 - s * s2;
-                cand = if denom > 0.0 {
-                    x - 2.0 * s * s1 / denom
-                } else {
-                    x - s / s1
-                };
-            }
-            let use_bisect = !(cand > lo && cand < hi) || s.abs() > 0.5 * last_s;
-            last_s = s.abs();
-            if use_bisect {
-                cand = 0.5 * (lo + hi);
-            } else {
-                self.newton += 1;
-            }
-            let jc = self.eval(cand)?;
-            if jc.side.abs() <= self.side_tol || hi - lo <= 4.0 * f64::EPSILON * (1.0 + cand.abs()) {
-                return Some((cand, jc));
-            }
-            if jc.side < 0.0 {
-                lo = cand;
-                jlo = jc;
-            } else {
-                hi = cand;
-                jhi = jc;
-            }
-            x = cand;
-            jx = jc;
-        }
-        let _ = (jlo, jhi);
-        Some((x, jx))
+/// `r`, or [`QueryError::Degenerate`] when the answer holds a non-finite number: the last guard
+/// of the public queries (finite but absurd input, e.g. a rotation of 1e300, can overflow where
+/// no earlier check looks).
+pub(crate) fn finite_distance(r: Result<StationaryDistance, QueryError>) -> Result<StationaryDistance, QueryError> {
+    match r {
+        Ok(d) if !d.is_finite() => Err(QueryError::Degenerate),
+        r => r,
     }
 }
 
 /// Capacity of the branch-and-bound node stack; reaching it ends the search with
 /// [`DistanceStatus::OutOfIterations`] (never observed: the depth stays below 64).
 const NODE_STACK: usize = 96;
+/// Intervals of the normal angle narrower than this (radians) are not split further.
+const MIN_INTERVAL: f64 = 1e-14;
+/// An interval holding a local maximum is split at the maximum's normal angle unless it lies
+/// within this fraction of the interval of an end (then at the midpoint).
+const SPLIT_MARGIN: f64 = 1e-3;
 
 /// One endpoint of a branch-and-bound interval over the normal angle θ.
 #[derive(Copy, Clone)]
@@ -298,7 +212,7 @@ pub fn stationary_distance<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized>(
     }
     let frame = PairFrame::from_pos12(pos12);
     let phi0 = obj1.phi_range_of_normal(direction_or_x(pos12.translation)).0;
-    crate::error::finite_distance(stationary_in_frame(obj1, obj2, frame, phi0, options))
+    finite_distance(stationary_in_frame(obj1, obj2, frame, phi0, options))
 }
 
 fn direction_or_x(v: Vector) -> Vector {
@@ -390,7 +304,7 @@ pub(crate) fn stationary_in_frame<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Siz
         let delta = b.theta - a.theta;
         let m = (-(a.jet.fwd + b.jet.fwd) * 0.5 + lip * delta * 0.5).max(0.0);
         let ub = envelope_max(a.jet.fwd, -a.jet.side, b.jet.fwd, -b.jet.side, m, delta);
-        if ub <= best_v + tol || delta < 1e-14 {
+        if ub <= best_v + tol || delta < MIN_INTERVAL {
             n -= 1;
             continue;
         }
@@ -405,7 +319,7 @@ pub(crate) fn stationary_in_frame<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Siz
                 consider(&mut best, phi, &j);
                 let th = j.normal_in_2.y.atan2(j.normal_in_2.x);
                 let th = a.theta + ccw_angle(unit(a.theta), unit(th));
-                if th > a.theta + 1e-3 * delta && th < b.theta - 1e-3 * delta {
+                if th > a.theta + SPLIT_MARGIN * delta && th < b.theta - SPLIT_MARGIN * delta {
                     split = th;
                 }
             }
@@ -425,7 +339,7 @@ pub(crate) fn stationary_in_frame<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Siz
     // object2's point.
     if j.curve1.normal_turn_rate() == 0.0 && j.side.abs() > sv.side_tol && j.side_p > 0.0 {
         let (lo, hi) = obj1.phi_range_of_normal(j.curve1.normal);
-        let w = crate::curve::wrap_phi(phi);
+        let w = wrap_phi(phi);
         if lo <= w && w <= hi {
             let target = (w - j.side / j.side_p).clamp(lo, hi);
             if let Some(jt) = sv.eval(target) {

@@ -16,9 +16,9 @@
 //! assert!((aabb.maxs.x - 2.0).abs() < 1e-12);
 //! ```
 
+use crate::curve::pieces::{flat_pieces, FlatPiece};
 use crate::curve::{ConvexCurve, CurvePoint, SupportJet};
-use crate::math::Vector;
-use crate::parry_shape::{flat_pieces, FlatPiece};
+use crate::numerics::math::Vector;
 use std::sync::Arc;
 
 /// A user-defined convex curve as a parry shape (`ShapeType::Custom`).

@@ -16,9 +16,13 @@
 //! implements [`ConvexCurve::support_jet`]: S(m), the radius of curvature ρ(m) = h(ψ) + h''(ψ)
 //! there (h the support function, ψ the angle of m) and dρ/dψ.
 
-use crate::math::{cross, perp, Vector};
+use crate::numerics::angle::ccw_angle;
+use crate::numerics::math::{cross, perp, Vector};
 use core::f64::consts::PI;
 use core::fmt::Debug;
+
+/// Bisections of the default [`ConvexCurve::phi_range_of_normal`] (φ to the resolution of f64).
+const NORMAL_BISECTIONS: usize = 64;
 
 /// Boundary point and outward unit normal with their first and second derivatives in φ.
 #[derive(Copy, Clone, Debug, PartialEq, Default)]
@@ -151,27 +155,6 @@ pub trait ConvexCurve: Send + Sync + Debug + 'static {
     }
 }
 
-/// Wraps φ into [−π, π).
-#[inline]
-pub fn wrap_phi(phi: f64) -> f64 {
-    if (-PI..PI).contains(&phi) {
-        phi
-    } else {
-        (phi + PI).rem_euclid(2.0 * PI) - PI
-    }
-}
-
-/// Angle in [0, 2π) from unit vector `a` to unit vector `b`, counter-clockwise.
-#[inline]
-pub(crate) fn ccw_angle(a: Vector, b: Vector) -> f64 {
-    let ang = cross(a, b).atan2(a.dot(b));
-    if ang < 0.0 {
-        ang + 2.0 * PI
-    } else {
-        ang
-    }
-}
-
 fn default_phi_range_of_normal<C: ConvexCurve + ?Sized>(c: &C, n: Vector) -> (f64, f64) {
     let n = n.normalize_or_zero();
     let n0 = c.eval(-PI).normal;
@@ -190,7 +173,7 @@ fn default_phi_range_of_normal<C: ConvexCurve + ?Sized>(c: &C, n: Vector) -> (f6
     // lo: first φ with turn(φ) >= target; hi: last φ with turn(φ) <= target.
     let bisect = |pred: &dyn Fn(f64) -> bool| {
         let (mut a, mut b) = (-PI, PI);
-        for _ in 0..64 {
+        for _ in 0..NORMAL_BISECTIONS {
             let m = 0.5 * (a + b);
             if pred(m) {
                 b = m;
@@ -206,24 +189,4 @@ fn default_phi_range_of_normal<C: ConvexCurve + ?Sized>(c: &C, n: Vector) -> (f6
     let lo = bisect(&|phi| turn(phi) >= target);
     let hi = bisect(&|phi| turn(phi) > target);
     (lo, hi.max(lo))
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn wrap_phi_maps_into_half_open_circle() {
-        assert_eq!(wrap_phi(0.5), 0.5);
-        assert!((wrap_phi(PI) + PI).abs() < 1e-15);
-        assert!((wrap_phi(3.0 * PI + 0.25) - (-PI + 0.25)).abs() < 1e-12);
-        assert!((wrap_phi(-PI - 0.25) - (PI - 0.25)).abs() < 1e-12);
-    }
-
-    #[test]
-    fn ccw_angle_is_in_zero_two_pi() {
-        let a = Vector::new(1.0, 0.0);
-        assert!((ccw_angle(a, Vector::new(0.0, 1.0)) - PI / 2.0).abs() < 1e-15);
-        assert!((ccw_angle(a, Vector::new(0.0, -1.0)) - 1.5 * PI).abs() < 1e-15);
-    }
 }

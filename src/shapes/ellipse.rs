@@ -16,7 +16,7 @@
 
 use crate::curve::{ConvexCurve, CurvePoint, SupportJet};
 use crate::error::{positive, ShapeError};
-use crate::math::Vector;
+use crate::numerics::math::Vector;
 
 /// An ellipse centred at the origin with semi-axes `half_x` (a) and `half_y` (b).
 #[derive(Copy, Clone, Debug, PartialEq)]
@@ -73,7 +73,7 @@ impl Ellipse {
     }
 
     /// An ellipse with semi-axes `half_x`, `half_y`, or why not (each must be finite, positive
-    /// and within [[`crate::error::MIN_LENGTH`], [`crate::error::MAX_LENGTH`]]).
+    /// and within [[`crate::MIN_LENGTH`], [`crate::MAX_LENGTH`]]).
     pub fn try_new(half_x: f64, half_y: f64) -> Result<Self, ShapeError> {
         Ok(Self {
             half_x: positive("half_x", half_x)?,
@@ -122,7 +122,7 @@ impl ConvexCurve for Ellipse {
         // g = 1/h: g' = −H'g³/2, g'' = −H''g³/2 + 3H'²g⁵/4, and P = (a²c·g, b²s·g) differentiates
         // by the product rule (N' = (−s, c), N'' = −N). One square root and one division.
         let (a2, b2) = (self.half_x * self.half_x, self.half_y * self.half_y);
-        let (s, c) = crate::math::sin_cos(phi);
+        let (s, c) = crate::numerics::math::sin_cos(phi);
         let g = 1.0 / (a2 * c * c + b2 * s * s).sqrt();
         let g3 = g * g * g;
         let k = b2 - a2;
@@ -253,7 +253,7 @@ mod tests {
     fn eval_derivatives_match_dual_number_arithmetic() {
         // The closed-form derivatives of `eval` against the same point computed in `Dual2`
         // arithmetic from P = (a²c, b²s)/√(a²c² + b²s²), on round and thin ellipses.
-        use crate::jet::Dual2;
+        use crate::numerics::jet::Dual2;
         for (a, b) in [(1.0, 1.0), (0.3, 1.7), (2.0, 0.5), (1.0, 1e-3), (1e-3, 1.0)] {
             let e = Ellipse::new(a, b);
             let (a2, b2) = (a * a, b * b);

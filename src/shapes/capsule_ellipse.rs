@@ -8,12 +8,13 @@
 //!
 //! (The specification's second condition reads "∨"; it is "∧".) Point and normal are continuous;
 //! derivatives jump at ±arctan(r2/r1) and ±π/2. They are computed by forward automatic
-//! differentiation ([`crate::jet::Dual2`]).
+//! differentiation ([`crate::numerics::jet::Dual2`]).
 
-use crate::curve::{wrap_phi, ConvexCurve, CurvePoint};
+use crate::curve::{ConvexCurve, CurvePoint};
 use crate::error::{positive, ShapeError};
-use crate::jet::Dual2;
-use crate::math::Vector;
+use crate::numerics::angle::wrap_phi;
+use crate::numerics::jet::Dual2;
+use crate::numerics::math::Vector;
 use core::f64::consts::FRAC_PI_2;
 
 /// Shape1 of Appendix A with parameters r1, r2, r3.
@@ -54,7 +55,7 @@ impl CapsuleEllipse {
     }
 
     /// Shape1 with parameters r1, r2, r3, or why not (each must be finite, positive and within
-    /// [[`crate::error::MIN_LENGTH`], [`crate::error::MAX_LENGTH`]], and r1 ≥ 1e-6·r2: on
+    /// [[`crate::MIN_LENGTH`], [`crate::MAX_LENGTH`]], and r1 ≥ 1e-6·r2: on
     /// thinner arcs r1² − r2²cos²φ of eq. 9 is lost to rounding at the arcs' ends and the
     /// boundary evaluates to NaN).
     pub fn try_new(r1: f64, r2: f64, r3: f64) -> Result<Self, ShapeError> {
@@ -105,7 +106,7 @@ impl ConvexCurve for CapsuleEllipse {
             // the circle's point behind the segment (inside the shape, normal turned the wrong
             // way; with r1 ≪ r2 by up to √ε·r2/r1, so that distanceFwd overestimates the gap):
             // the arc starts where |sin φ|·r1 ≥ r2·cos φ, the segment before.
-            let (s, c) = crate::math::sin_cos(phi);
+            let (s, c) = crate::numerics::math::sin_cos(phi);
             let on_arc = s.abs() * r1 >= r2 * c;
             if !on_arc {
                 piece = 2;

@@ -6,7 +6,7 @@
 //! shape written once in terms of them yields every derivative the algorithms need.
 //!
 //! The crate uses these small hand-written types instead of `num-dual` because they are `Copy`,
-//! allocation-free and about 1.8× cheaper per evaluation (see README, "Dependencies").
+//! allocation-free and about 1.8× cheaper per evaluation (README, "Dependencies").
 
 use core::ops::{Add, Div, Mul, Neg, Sub};
 
@@ -50,19 +50,19 @@ impl Dual2 {
     /// Sine.
     #[inline]
     pub fn sin(self) -> Self {
-        let (s, c) = crate::math::sin_cos(self.v);
+        let (s, c) = crate::numerics::math::sin_cos(self.v);
         self.chain(s, c, -s)
     }
     /// Cosine.
     #[inline]
     pub fn cos(self) -> Self {
-        let (s, c) = crate::math::sin_cos(self.v);
+        let (s, c) = crate::numerics::math::sin_cos(self.v);
         self.chain(c, -s, -c)
     }
     /// Sine and cosine together (one `sin_cos` of the value).
     #[inline]
     pub fn sin_cos(self) -> (Self, Self) {
-        let (s, c) = crate::math::sin_cos(self.v);
+        let (s, c) = crate::numerics::math::sin_cos(self.v);
         (self.chain(s, c, -s), self.chain(c, -s, -c))
     }
     /// Tangent.

@@ -2,7 +2,7 @@
 //! φ is the normal angle: P = r·(cos φ, sin φ), ρ = r.
 
 use crate::curve::{ConvexCurve, CurvePoint, SupportJet};
-use crate::math::{unit, Vector};
+use crate::numerics::math::{unit, Vector};
 
 /// A circle centred at the origin.
 #[derive(Copy, Clone, Debug, PartialEq)]

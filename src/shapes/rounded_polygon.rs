@@ -15,11 +15,18 @@
 //! it with its own Box2D-style routine; [`RoundedPolygon::to_parry`] converts when parry's shape is
 //! wanted.
 
+use crate::curve::polygon_pieces::{layout, LayoutScalars, PolygonPieces};
 use crate::curve::{ConvexCurve, CurvePoint};
 use crate::error::{non_negative, positive, ShapeError};
-use crate::math::{cross, unit, Vector};
-use crate::polygon_pieces::{layout, LayoutScalars, PolygonPieces};
+use crate::numerics::math::{cross, unit, Vector};
 use core::f64::consts::PI;
+
+/// Consecutive vertices closer than this fraction of the polygon's size are the same vertex
+/// ([`ShapeError::RepeatedVertex`]).
+const REPEATED_VERTEX: f64 = 1e-12;
+/// A vertex where the boundary turns by less than this (the sine of the turn between the unit
+/// edge directions) is not a convex corner ([`ShapeError::NotConvex`]).
+const MIN_TURN: f64 = 1e-12;
 
 /// A convex polygon with rounded corners: its core polygon dilated by `corner_radius`.
 #[derive(Clone, Debug, PartialEq)]
@@ -79,7 +86,7 @@ impl RoundedPolygon {
     /// The convex counter-clockwise polygon `vertices` dilated by `corner_radius`, or why not:
     /// fewer than three vertices, a non-finite vertex, a repeated vertex, a reflex, flat or
     /// clockwise corner, a negative or non-finite radius, or a length outside
-    /// [[`crate::error::MIN_LENGTH`], [`crate::error::MAX_LENGTH`]] ([`ShapeError::OutOfRange`]).
+    /// [[`crate::MIN_LENGTH`], [`crate::MAX_LENGTH`]] ([`ShapeError::OutOfRange`]).
     pub fn try_new(vertices: &[Vector], corner_radius: f64) -> Result<Self, ShapeError> {
         let r = non_negative("corner_radius", corner_radius)?;
         if vertices.len() < 3 {
@@ -96,7 +103,7 @@ impl RoundedPolygon {
             .max(f64::MIN_POSITIVE);
         for i in 0..n {
             let j = (i + 1) % n;
-            if (vertices[j] - vertices[i]).length() <= 1e-12 * size {
+            if (vertices[j] - vertices[i]).length() <= REPEATED_VERTEX * size {
                 return Err(ShapeError::RepeatedVertex { index: j });
             }
         }
@@ -106,7 +113,7 @@ impl RoundedPolygon {
             let b = vertices[i];
             let c = vertices[(i + 1) % n];
             let (e0, e1) = ((b - a).normalize(), (c - b).normalize());
-            if cross(e0, e1) <= 1e-12 {
+            if cross(e0, e1) <= MIN_TURN {
                 return Err(ShapeError::NotConvex { index: i });
             }
             total_turn += cross(e0, e1).atan2(e0.dot(e1));

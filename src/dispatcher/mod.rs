@@ -1,0 +1,167 @@
+//! [`SmoothDispatcher`]: parry's `QueryDispatcher` that answers every query for pairs involving
+//! this crate's shapes with the algorithms of the stationary distance and the time of impact ([`crate::stationary_distance`], [`crate::time_of_impact`]), and hands
+//! every other pair to parry's `DefaultQueryDispatcher`.
+//!
+//! Which pairs it answers itself ("ours"): one shape is an [`crate::Ellipse`], [`crate::RoundedPolygon`],
+//! [`crate::CapsuleEllipse`] or [`crate::CustomCurve`], and the other is one of those or a parry `Ball`,
+//! `Cuboid`, `RoundCuboid`, `Capsule`, `Segment`, `Triangle`, `RoundTriangle`, `ConvexPolygon`
+//! or `RoundConvexPolygon` (converted to a [`crate::RoundedPolygon`] or [`crate::BallCurve`]), provided one of
+//! the two is strictly convex (object2 of the specification). Pairs where neither is strictly
+//! convex (e.g. rounded polygon against a box) go to parry through the shapes' support maps,
+//! which is exact for these polygonal pairs. Against a `HalfSpace` the distance is closed-form
+//! and the nonlinear cast is [`crate::time_of_impact_halfspace`]. A composite shape (compound, polyline,
+//! trimesh, heightfield) on either side is decomposed by parry's composite helpers with *this*
+//! dispatcher answering the sub-queries, so smooth shapes inside composites keep exact answers.
+//!
+//! Semantics are parry's: `pos12` is shape 2's pose in shape 1's frame, witnesses and normals are
+//! in each shape's local frame, `distance` is 0 for touching or penetrating shapes, a cast hit's
+//! status is `Converged`, `PenetratingOrWithinTargetDist` or `OutOfIterations`
+//! ([`crate::ToiStatus::to_parry`]).
+//!
+//! One deliberate difference, for rapier, chosen by [`StartContactPolicy`] (the default is
+//! [`StartContactPolicy::RapierAllowance`]): with `stop_at_penetration = false` (rapier's CCD of
+//! solid bodies) and shapes in contact at the start (penetrating, or within
+//! [`StartContactPolicy::START_CONTACT_GAP`] of the pair's size), the nonlinear cast reports the
+//! first time the contact gets deeper than the *allowance*, [`StartContactPolicy::ALLOWANCE`] (a
+//! quarter) of the thinner shape's `ccd_thickness` — or, for a contact already about that deep,
+//! [`StartContactPolicy::DEEPER_FRACTION`] of the allowance deeper than at the start — and no
+//! hit when it does not within the window (at the earliest [`StartContactPolicy::START_NUDGE`] of
+//! the window after the start). rapier discards hits at exactly the start time, so answering the start time
+//! (as [`crate::time_of_impact`] does) would let a fast body in shallow contact pass through a
+//! thin wall; answering just after it freezes a body that spins against a wall (rapier keeps its
+//! velocity, its one-point contact does not see the spin, and the next step freezes it again);
+//! answering "no hit" for a contact that approaches slowly at the start lets a spinning ellipse
+//! turn its tip deep into the wall within the step. The allowance bounds the penetration a step
+//! adds and lets the body move on. The deepening is found on the signed distance along the
+//! motions (16 samples, then bisection), and for a fast approach no later than when the start
+//! rate alone reaches the target. A separating contact at the start is looked past
+//! ([`crate::time_of_impact`]), with the same bound on a later deepening.
+//!
+//! The same rule applies to pairs of this crate's shapes that parry answers (no strictly convex
+//! side), whose start contact comes from parry's contact. For these pairs parry's support-map
+//! contact and manifold can come back empty for shapes that nearly touch (GJK/EPA give up on
+//! parallel faces 10⁻¹⁰ apart, exactly where rapier's CCD leaves a body); the dispatcher then
+//! computes them on the shapes pushed 10⁻⁸ of their size into each other and measures the
+//! distances at the true pose (`parry_fallback::parry_contact`, and `touching_manifold` in the `manifold` module).
+//!
+//! # Layout
+//!
+//! * `route`: how a pair is answered (this crate's algorithm, a half-space, a composite, parry),
+//!   with parry's shapes converted to curves on the stack (`inline_polygon`);
+//! * `queries`: parry's `QueryDispatcher` (intersection, distance, contact, closest points, casts);
+//! * `manifold`: parry's `PersistentQueryDispatcher` (rapier's contact manifolds);
+//! * `composite`: composite shapes decomposed by parry's helpers with this dispatcher inside;
+//! * `start_contact`: the [`StartContactPolicy`] of the nonlinear cast;
+//! * `parry_fallback`: parry's answers made robust (nearly touching contacts, windows not at 0);
+//! * `input_guard`: what is refused before parry sees it.
+
+mod composite;
+pub(crate) mod inline_polygon;
+pub(crate) mod input_guard;
+mod manifold;
+pub(crate) mod parry_fallback;
+mod queries;
+pub(crate) mod route;
+pub(crate) mod start_contact;
+
+pub use start_contact::StartContactPolicy;
+
+use crate::error::QueryError;
+use crate::numerics::math::{Pose, Real};
+use crate::query::halfspace::halfspace_distance;
+use crate::query::stationary::{DistanceOptions, StationaryDistance};
+use crate::query::toi::ToiOptions;
+use parry2d_f64::shape::Shape;
+use route::{pair_distance, route, Route, RouteScratch};
+
+/// The query dispatcher of this crate: exact smooth-shape queries, parry for everything else.
+///
+/// Drop it into rapier with `NarrowPhase::with_query_dispatcher(SmoothDispatcher::default())`:
+/// the default options and [`StartContactPolicy::RapierAllowance`] are what rapier's CCD needs.
+/// Other callers of `cast_shapes_nonlinear` with `stop_at_penetration = false` who want parry's
+/// plain semantics choose [`StartContactPolicy::Plain`]:
+///
+/// ```
+/// use smooth_ccd2d::{SmoothDispatcher, StartContactPolicy};
+/// let for_rapier = SmoothDispatcher::default();
+/// assert_eq!(for_rapier.start_contact, StartContactPolicy::RapierAllowance);
+/// let plain = SmoothDispatcher::default().with_start_contact(StartContactPolicy::Plain);
+/// assert_eq!(plain.start_contact, StartContactPolicy::Plain);
+/// ```
+#[derive(Clone, Debug, Default)]
+#[non_exhaustive]
+pub struct SmoothDispatcher {
+    /// Options of the stationary distance (distance, contact, closest points, intersection).
+    pub distance_options: DistanceOptions,
+    /// Options of the casts (the target distance and `stop_at_penetration` come from the caller).
+    pub toi_options: ToiOptions,
+    /// What `cast_shapes_nonlinear` answers with `stop_at_penetration = false` for shapes in
+    /// contact at the start (default: rapier's allowance rule).
+    pub start_contact: StartContactPolicy,
+}
+
+impl SmoothDispatcher {
+    /// The most steps parry's nonlinear cast (`parry_fallback::parry_cast_nonlinear`) may take,
+    /// and the most relative turns, and travels of the pair's size (sum of bounding radii), in
+    /// its window: a window holding more is refused with `Unsupported` (parry would run for
+    /// hours).
+    pub const PARRY_MAX_STEPS: Real = 1e4;
+
+    /// The dispatcher with default options and rapier's start-contact rule (as `default()`).
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// The same dispatcher with these stationary-distance options.
+    pub fn with_distance_options(mut self, options: DistanceOptions) -> Self {
+        self.distance_options = options;
+        self
+    }
+
+    /// The same dispatcher with these time-of-impact options (the target distance and
+    /// `stop_at_penetration` of a cast still come from its caller).
+    pub fn with_toi_options(mut self, options: ToiOptions) -> Self {
+        self.toi_options = options;
+        self
+    }
+
+    /// The same dispatcher with this start-contact policy.
+    pub fn with_start_contact(mut self, policy: StartContactPolicy) -> Self {
+        self.start_contact = policy;
+        self
+    }
+
+    /// The signed distance, witnesses and normals of a pair this dispatcher answers itself, in
+    /// the caller's order; `None` when the pair goes to parry.
+    pub fn signed_distance(
+        &self,
+        pos12: &Pose,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+    ) -> Option<Result<StationaryDistance, QueryError>> {
+        self.routed_distance(&route(g1, g2, &mut RouteScratch::default()), pos12)
+    }
+
+    /// [`SmoothDispatcher::signed_distance`] of an already routed pair.
+    pub(crate) fn routed_distance(
+        &self,
+        route: &Route,
+        pos12: &Pose,
+    ) -> Option<Result<StationaryDistance, QueryError>> {
+        match route {
+            Route::Curves { c1, c2, swapped } => Some(pair_distance(c1, c2, *swapped, pos12, &self.distance_options)),
+            Route::HalfSpace { curve, hs, curve_first } => {
+                Some(halfspace_distance(curve.get(), hs, pos12, *curve_first))
+            }
+            _ => None,
+        }
+    }
+
+    /// Quick rejection on bounding circles: true when the shapes are surely further apart than
+    /// `margin`.
+    pub(crate) fn far_apart(pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape, margin: Real) -> bool {
+        let b1 = g1.compute_local_bounding_sphere();
+        let b2 = g2.compute_bounding_sphere(pos12);
+        (b2.center - b1.center).length() - b1.radius - b2.radius > margin
+    }
+}

@@ -1,0 +1,78 @@
+//! parry's traits for [`CustomCurve`], generically from the wrapped curve.
+
+use super::custom_shape_common;
+use super::features::curve_feature;
+use super::mass::curve_mass;
+use super::projection::{project_on_curve, project_on_curve_with_feature};
+use super::ray::piecewise_ray;
+use super::{aabb_ccd_thickness, curve_aabb};
+use crate::numerics::math::unit_or_x;
+use crate::numerics::math::{Real, Vector};
+use crate::CustomCurve;
+use core::f64::consts::FRAC_PI_4;
+use parry2d_f64::bounding_volume::{Aabb, BoundingSphere};
+use parry2d_f64::mass_properties::MassProperties;
+use parry2d_f64::query::{PointProjection, PointQuery, Ray, RayCast, RayIntersection};
+use parry2d_f64::shape::{FeatureId, PolygonalFeature, PolygonalFeatureMap, Shape, ShapeType, SupportMap, TypedShape};
+
+impl SupportMap for CustomCurve {
+    #[inline]
+    fn local_support_point(&self, dir: Vector) -> Vector {
+        self.curve().support_point(unit_or_x(dir))
+    }
+}
+
+impl PolygonalFeatureMap for CustomCurve {
+    fn local_support_feature(&self, dir: Vector, out_feature: &mut PolygonalFeature) {
+        curve_feature(self.curve(), self.flats(), dir, out_feature);
+    }
+}
+
+impl RayCast for CustomCurve {
+    fn cast_local_ray_and_get_normal(
+        &self,
+        ray: &Ray,
+        max_time_of_impact: Real,
+        solid: bool,
+    ) -> Option<RayIntersection> {
+        piecewise_ray(self.curve(), ray, max_time_of_impact, solid)
+    }
+}
+
+impl PointQuery for CustomCurve {
+    fn project_local_point(&self, pt: Vector, solid: bool) -> PointProjection {
+        project_on_curve(self.curve(), pt, solid)
+    }
+
+    fn project_local_point_and_get_feature(&self, pt: Vector) -> (PointProjection, FeatureId) {
+        project_on_curve_with_feature(self.curve(), pt)
+    }
+}
+
+impl Shape for CustomCurve {
+    custom_shape_common!();
+
+    fn compute_local_aabb(&self) -> Aabb {
+        curve_aabb(self.curve())
+    }
+
+    fn compute_local_bounding_sphere(&self) -> BoundingSphere {
+        BoundingSphere::new(Vector::ZERO, self.curve().bounding_radius())
+    }
+
+    fn scale_dyn(&self, _scale: Vector, _num_subdivisions: u32) -> Option<Box<dyn Shape>> {
+        None
+    }
+
+    fn mass_properties(&self, density: Real) -> MassProperties {
+        curve_mass(self.curve(), density)
+    }
+
+    fn ccd_thickness(&self) -> Real {
+        aabb_ccd_thickness(&self.compute_local_aabb())
+    }
+
+    fn ccd_angular_thickness(&self) -> Real {
+        FRAC_PI_4
+    }
+}

@@ -1,0 +1,160 @@
+//! parry's traits for [`Ellipse`]: closed-form ray cast, Eberly's projection, exact mass.
+
+use super::custom_shape_common;
+use super::features::tangent_feature;
+use super::projection::ellipse_closest_point;
+use crate::curve::ConvexCurve;
+use crate::numerics::math::unit_or_x;
+use crate::numerics::math::{Real, Vector};
+use crate::Ellipse;
+use core::f64::consts::{FRAC_PI_2, PI};
+use parry2d_f64::bounding_volume::{Aabb, BoundingSphere};
+use parry2d_f64::mass_properties::MassProperties;
+use parry2d_f64::query::{PointProjection, PointQuery, Ray, RayCast, RayIntersection};
+use parry2d_f64::shape::{FeatureId, PolygonalFeature, PolygonalFeatureMap, Shape, ShapeType, SupportMap, TypedShape};
+
+impl Ellipse {
+    /// Outward unit normal at a boundary point `p` (the normalised gradient of x²/a² + y²/b²).
+    pub(crate) fn normal_at_point(&self, p: Vector) -> Vector {
+        let (a, b) = (self.half_x(), self.half_y());
+        unit_or_x(Vector::new(p.x / (a * a), p.y / (b * b)))
+    }
+
+    fn contains(&self, p: Vector) -> bool {
+        let (u, v) = (p.x / self.half_x(), p.y / self.half_y());
+        u * u + v * v <= 1.0
+    }
+}
+
+impl SupportMap for Ellipse {
+    #[inline]
+    fn local_support_point(&self, dir: Vector) -> Vector {
+        self.point_with_normal(unit_or_x(dir))
+    }
+}
+
+impl PolygonalFeatureMap for Ellipse {
+    fn local_support_feature(&self, dir: Vector, out_feature: &mut PolygonalFeature) {
+        let n = unit_or_x(dir);
+        let (a2, b2) = (self.half_x() * self.half_x(), self.half_y() * self.half_y());
+        let h = (a2 * n.x * n.x + b2 * n.y * n.y).sqrt();
+        let p = Vector::new(a2 * n.x, b2 * n.y) / h;
+        let rho = a2 * b2 / (h * h * h);
+        tangent_feature(p, n, rho, self.half_x().max(self.half_y()), out_feature);
+    }
+}
+
+impl RayCast for Ellipse {
+    fn cast_local_ray_and_get_normal(
+        &self,
+        ray: &Ray,
+        max_time_of_impact: Real,
+        solid: bool,
+    ) -> Option<RayIntersection> {
+        let (a, b) = (self.half_x(), self.half_y());
+        let (o, d) = (ray.origin, ray.dir);
+        if !(o.is_finite() && d.is_finite()) || max_time_of_impact.is_nan() {
+            return None;
+        }
+        let o2 = Vector::new(o.x / a, o.y / b);
+        let d2 = Vector::new(d.x / a, d.y / b);
+        let cc = (o2.length() - 1.0) * (o2.length() + 1.0);
+        let inside = cc <= 0.0;
+        if d.x == 0.0 && d.y == 0.0 {
+            if !inside || max_time_of_impact < 0.0 {
+                return None;
+            }
+            let p = ellipse_closest_point(a, b, o);
+            return Some(RayIntersection::new(0.0, -self.normal_at_point(p), FeatureId::Face(0)));
+        }
+        // Scale the quadratic to avoid under/overflow for tiny or huge directions.
+        let scale = d2.x.abs().max(d2.y.abs());
+        let d2s = d2 / scale;
+        let aa = d2s.length_squared();
+        let bb = o2.dot(d2s);
+        if !inside && bb >= 0.0 {
+            return None;
+        }
+        let disc = bb * bb - aa * cc;
+        if disc < 0.0 {
+            return None;
+        }
+        let sq = disc.sqrt();
+        let q = -(bb + sq.copysign(bb));
+        let (r1, r2) = if q == 0.0 { (0.0, 0.0) } else { (q / aa, cc / q) };
+        let (t_in, t_out) = (r1.min(r2) / scale, r1.max(r2) / scale);
+        let hit = if !inside {
+            let p = o + d * t_in;
+            (t_in, self.normal_at_point(p))
+        } else if solid {
+            (0.0, -unit_or_x(d))
+        } else {
+            let p = o + d * t_out;
+            (t_out, -self.normal_at_point(p))
+        };
+        (hit.0 <= max_time_of_impact && hit.0.is_finite())
+            .then(|| RayIntersection::new(hit.0.max(0.0), hit.1, FeatureId::Face(0)))
+    }
+}
+
+impl PointQuery for Ellipse {
+    fn project_local_point(&self, pt: Vector, solid: bool) -> PointProjection {
+        if !pt.is_finite() {
+            return PointProjection::new(false, Vector::new(self.half_x(), 0.0));
+        }
+        // A point beyond 1e50 sizes (where Eberly's scaled coordinates overflow): its closest
+        // point is the one whose normal points at it, to within 1e-50 of the size.
+        if pt.x.abs().max(pt.y.abs()) > 1e50 * self.half_x().max(self.half_y()) {
+            return PointProjection::new(false, self.point_with_normal(unit_or_x(pt)));
+        }
+        let inside = self.contains(pt);
+        if inside && solid {
+            return PointProjection::new(true, pt);
+        }
+        PointProjection::new(inside, ellipse_closest_point(self.half_x(), self.half_y(), pt))
+    }
+
+    fn project_local_point_and_get_feature(&self, pt: Vector) -> (PointProjection, FeatureId) {
+        (self.project_local_point(pt, false), FeatureId::Face(0))
+    }
+
+    fn contains_local_point(&self, pt: Vector) -> bool {
+        self.contains(pt)
+    }
+}
+
+impl Shape for Ellipse {
+    custom_shape_common!();
+
+    fn compute_local_aabb(&self) -> Aabb {
+        let h = Vector::new(self.half_x(), self.half_y());
+        Aabb::new(-h, h)
+    }
+
+    fn compute_local_bounding_sphere(&self) -> BoundingSphere {
+        BoundingSphere::new(Vector::ZERO, self.bounding_radius())
+    }
+
+    fn scale_dyn(&self, scale: Vector, _num_subdivisions: u32) -> Option<Box<dyn Shape>> {
+        let e = Ellipse::try_new(self.half_x() * scale.x.abs(), self.half_y() * scale.y.abs()).ok()?;
+        Some(Box::new(e))
+    }
+
+    fn mass_properties(&self, density: Real) -> MassProperties {
+        let (a, b) = (self.half_x(), self.half_y());
+        let mass = density * PI * a * b;
+        MassProperties::new(Vector::ZERO, mass, mass * (a * a + b * b) / 4.0)
+    }
+
+    fn ccd_thickness(&self) -> Real {
+        self.half_x().min(self.half_y())
+    }
+
+    fn ccd_angular_thickness(&self) -> Real {
+        if self.half_x() == self.half_y() {
+            PI
+        } else {
+            FRAC_PI_2
+        }
+    }
+}

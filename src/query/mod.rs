@@ -1,0 +1,9 @@
+//! The queries on two curves: the three distances with their derivatives (`pair`), the root
+//! solver of distanceSide (`solver`), the stationary distance, the time of impact, and both
+//! against a half-space.
+
+pub(crate) mod halfspace;
+pub(crate) mod pair;
+pub(crate) mod solver;
+pub(crate) mod stationary;
+pub(crate) mod toi;
