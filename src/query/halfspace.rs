@@ -150,6 +150,23 @@ fn sample(
 
 /// The time of impact of `curve` moving by `mc` against the half-space `hs` moving by `mh`,
 /// with the semantics of [`crate::time_of_impact`]; the result has the curve as shape 1.
+///
+/// An ellipse with semi-axes 0.5 × 0.2 falling at 10 m/s from 1.2 above the ground y = 0, lying
+/// flat: it touches when its lowest point (0.2 below its centre) reaches the plane, at t = 0.1:
+///
+/// ```
+/// use parry2d_f64::math::{Pose, Vector};
+/// use parry2d_f64::query::NonlinearRigidMotion;
+/// use parry2d_f64::shape::HalfSpace;
+/// use smooth_ccd2d::{time_of_impact_halfspace, Ellipse, ToiOptions, ToiStatus};
+///
+/// let fall = NonlinearRigidMotion::new(Pose::translation(0.0, 1.2), Vector::ZERO, Vector::new(0.0, -10.0), 0.0);
+/// let ground = HalfSpace::new(Vector::Y);
+/// let r = time_of_impact_halfspace(&Ellipse::new(0.5, 0.2), &fall, &ground, &NonlinearRigidMotion::identity(), 0.0, 1.0, &ToiOptions::default())
+///     .unwrap();
+/// assert_eq!(r.status, ToiStatus::Hit);
+/// assert!((r.time - 0.1).abs() < 1e-12);
+/// ```
 pub fn time_of_impact_halfspace(
     curve: &dyn ConvexCurve,
     mc: &NonlinearRigidMotion,

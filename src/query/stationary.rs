@@ -62,7 +62,7 @@ impl Default for DistanceOptions {
 }
 
 /// How a stationary distance query ([`stationary_distance`], and
-/// [`crate::query::halfspace::halfspace_distance`]) ended. Whatever the status, every number of the
+/// [`crate::halfspace_distance`]) ended. Whatever the status, every number of the
 /// [`StationaryDistance`] is finite and the normals are unit vectors; bad input is a
 /// [`QueryError`] instead. s below is the size of the pair (the larger bounding radius).
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
@@ -201,6 +201,21 @@ struct Node {
 /// convex) with object2 at `pos12` in object1's frame, by the algorithm described in the module
 /// documentation. The curves may be trait objects or of known types (then the search is compiled
 /// for the pair, as for [`crate::time_of_impact`]).
+///
+/// An ellipse with semi-axes 2 × 1 and a disc of radius 0.5 centred 3 along x: the gap is
+/// 3 − 2 − 0.5 = 0.5, certified global:
+///
+/// ```
+/// use parry2d_f64::math::{Pose, Vector};
+/// use smooth_ccd2d::{stationary_distance, BallCurve, DistanceOptions, DistanceStatus, Ellipse};
+///
+/// let pos12 = Pose::translation(3.0, 0.0); // the disc's pose in the ellipse's frame
+/// let d = stationary_distance(&Ellipse::new(2.0, 1.0), &BallCurve { radius: 0.5 }, &pos12, &DistanceOptions::default())
+///     .unwrap();
+/// assert_eq!(d.status, DistanceStatus::Separated);
+/// assert!((d.distance - 0.5).abs() < 1e-12);
+/// assert!((d.point1 - Vector::new(2.0, 0.0)).length() < 1e-9);
+/// ```
 pub fn stationary_distance<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized>(
     obj1: &A,
     obj2: &B,

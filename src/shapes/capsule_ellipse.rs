@@ -47,6 +47,13 @@ impl CapsuleEllipse {
     ///
     /// # Panics
     /// When a parameter is not finite and positive; the message names it.
+    ///
+    /// ```
+    /// use smooth_ccd2d::CapsuleEllipse;
+    /// // The specification's Appendix A shape.
+    /// let shape1 = CapsuleEllipse::new(0.5, 1.0, 0.8);
+    /// assert!((shape1.segment_end_angle() - (1.0f64 / 0.5).atan()).abs() < 1e-15);
+    /// ```
     pub fn new(r1: f64, r2: f64, r3: f64) -> Self {
         match Self::try_new(r1, r2, r3) {
             Ok(c) => c,

@@ -65,6 +65,14 @@ impl Ellipse {
     ///
     /// # Panics
     /// When a semi-axis is not finite and positive; the message names it. See [`Ellipse::try_new`].
+    ///
+    /// ```
+    /// use smooth_ccd2d::{ConvexCurve, Ellipse, ShapeError};
+    /// let e = Ellipse::new(0.5, 0.2);
+    /// assert_eq!(e.bounding_radius(), 0.5);
+    /// // As a parry shape: `SharedShape::new(e)`; bad sizes are refused by `try_new`.
+    /// assert!(matches!(Ellipse::try_new(0.5, -1.0), Err(ShapeError::NotPositive { name: "half_y", .. })));
+    /// ```
     pub fn new(half_x: f64, half_y: f64) -> Self {
         match Self::try_new(half_x, half_y) {
             Ok(e) => e,

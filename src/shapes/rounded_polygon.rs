@@ -129,6 +129,14 @@ impl RoundedPolygon {
     ///
     /// # Panics
     /// On invalid input, naming the bad parameter; see [`RoundedPolygon::try_regular`].
+    ///
+    /// ```
+    /// use smooth_ccd2d::{ConvexCurve, RoundedPolygon};
+    /// let heptagon = RoundedPolygon::regular(7, 1.0, 0.15);
+    /// assert_eq!(heptagon.vertices().len(), 7);
+    /// assert!((heptagon.vertices()[0].x - 1.0).abs() < 1e-15); // the first on +x
+    /// assert!((heptagon.bounding_radius() - 1.15).abs() < 1e-12); // core radius + corner radius
+    /// ```
     pub fn regular(sides: usize, circumradius: f64, corner_radius: f64) -> Self {
         match Self::try_regular(sides, circumradius, corner_radius) {
             Ok(p) => p,
