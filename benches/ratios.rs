@@ -14,12 +14,8 @@
 //! faster. The casts run through the dispatchers with `stop_at_penetration = true` and target
 //! distance 0.
 
-#[path = "../tests/common/mod.rs"]
-#[allow(unused_imports)]
-mod common;
 mod support;
 
-use common::{ScenarioClass, ScenarioKind};
 use core::f64::consts::TAU;
 use parry2d_f64::math::{Pose, Vector};
 use parry2d_f64::query::{
@@ -29,9 +25,10 @@ use parry2d_f64::shape::{Ball, Shape};
 use smooth_ccd2d::{time_of_impact, BallCurve, ConvexCurve, Ellipse, SmoothDispatcher, ToiOptions};
 use std::hint::black_box;
 use std::time::Duration;
-use support::{split_batch, Case};
+use support::scenarios::{par_map, ScenarioClass, ScenarioKind};
+use support::{split_batch, sweep_of, Case, PolygonDisc};
 
-use support::timing::{calibrate, quantile, time_once, time_pair, ROUNDS};
+use support::timing::{calibrate, quantile, time_contenders, time_once, time_pair, ROUNDS};
 
 fn us(x: f64) -> String {
     if x.is_nan() {
@@ -76,19 +73,12 @@ struct Timed {
 
 fn time_batch(batch: &[Case], d: &SmoothDispatcher) -> Vec<Timed> {
     // The reference for parry's target distance 0 (all cores; before any timing).
-    let refs = common::par_map(batch, |c| c.s.reference_with_target(0.0));
+    let refs = par_map(batch, |c| c.s.reference_with_target(0.0));
     batch
         .iter()
         .zip(&refs)
         .map(|(c, rf)| {
-            let (ours, parry) = time_pair(
-                &mut || {
-                    black_box(c.ours(d));
-                },
-                &mut || {
-                    black_box(c.parry());
-                },
-            );
+            let (ours, parry) = time_contenders(|| c.ours(d), || c.parry());
             let (ours_hit, parry_hit) = (c.ours(d), c.parry());
             let (size, window) = (c.s.size(), c.s.t1 - c.s.t0);
             let err = |h: Option<ShapeCastHit>| Some((h?.time_of_impact - rf.hit_time()?).abs());
@@ -333,14 +323,7 @@ fn growth_row(label: String, configs: &[Growth], d: &SmoothDispatcher) -> (Strin
         };
         let probe = parry_probe(g);
         if probe.is_some() {
-            let (a, b) = time_pair(
-                &mut || {
-                    black_box(ours());
-                },
-                &mut || {
-                    black_box(parry());
-                },
-            );
+            let (a, b) = time_contenders(ours, parry);
             to.push(a);
             tp.push(b);
             ratio.push(b / a);
@@ -360,7 +343,7 @@ fn growth_row(label: String, configs: &[Growth], d: &SmoothDispatcher) -> (Strin
         if let Ok(r) = r {
             steps.push(r.cost.predictor_steps as f64);
         }
-        let rf = common::reference_toi(&g.ellipse, &g.m1, &disc, &g.m2, 0.0, g.t1, 0.0);
+        let rf = support::reference::reference_toi(&g.ellipse, &g.m1, &disc, &g.m2, 0.0, g.t1, 0.0);
         let size = g.ellipse.bounding_radius().max(DISC);
         let ho = ours().map(|h| h.time_of_impact);
         let hp = probe.flatten();
@@ -567,7 +550,8 @@ struct PosedPair {
 
 impl PosedPair {
     fn new(case: Case, pos12: Pose) -> Self {
-        let reference = common::reference_distance(case.s.curve1(), &Pose::IDENTITY, case.s.curve2(), &pos12).distance;
+        let reference =
+            support::reference::reference_distance(case.s.curve1(), &Pose::IDENTITY, case.s.curve2(), &pos12).distance;
         let size = case.s.size();
         Self {
             case,
@@ -576,36 +560,6 @@ impl PosedPair {
             size,
         }
     }
-}
-
-/// Shape 2's pose in shape 1's frame at the window start.
-fn start_pose(c: &Case) -> Pose {
-    c.s.motion1.position_at_time(c.s.t0).inverse() * c.s.motion2.position_at_time(c.s.t0)
-}
-
-/// The pose at the window start with the centres brought closer until this crate's signed
-/// distance is `depth` (negative: penetrating), by bisection on the translation's scale.
-fn pose_at_depth(c: &Case, depth: f64, d: &SmoothDispatcher) -> Option<Pose> {
-    let p0 = start_pose(c);
-    let at = |k: f64| {
-        let mut p = p0;
-        p.translation *= k;
-        p
-    };
-    let dist = |k: f64| -> Option<f64> { Some(d.signed_distance(&at(k), &*c.g1, &*c.g2)?.ok()?.distance) };
-    let (mut lo, mut hi) = (0.0, 1.0);
-    if !(dist(hi)? > depth && dist(lo)? < depth) {
-        return None;
-    }
-    for _ in 0..60 {
-        let mid = 0.5 * (lo + hi);
-        if dist(mid)? > depth {
-            hi = mid;
-        } else {
-            lo = mid;
-        }
-    }
-    Some(at(hi))
 }
 
 /// (median ours µs, median parry µs, ratio of medians, ratio of p90s, per-scenario ratio median).
@@ -633,7 +587,7 @@ fn distance_tables() {
         let cases: Vec<Case> = (0..support::BATCH as u64).map(|s| Case::new(class, s)).collect();
         let (mut apart, mut overlapping) = (Vec::new(), Vec::new());
         for c in cases {
-            let p = start_pose(&c);
+            let p = c.start_pose();
             let mut close = p;
             close.translation *= 0.25;
             let c2 = Case::new(class, c.s.seed);
@@ -663,14 +617,7 @@ fn distance_tables() {
                             .map(|x| x.distance)
                     }
                 };
-                let (a, b) = time_pair(
-                    &mut || {
-                        black_box(ours());
-                    },
-                    &mut || {
-                        black_box(parry());
-                    },
-                );
+                let (a, b) = time_contenders(ours, parry);
                 to.push(a);
                 tp.push(b);
                 let err = |x: Option<f64>| x.map_or(f64::INFINITY, |x| (x - p.reference).abs() / p.size);
@@ -712,7 +659,7 @@ fn manifold_tables() {
             .filter_map(|seed| {
                 let c = Case::new(class, seed);
                 let size = c.s.size();
-                let pose = pose_at_depth(&c, -0.01 * size, &d)?;
+                let pose = c.pose_at_depth(-0.01 * size, &d)?;
                 let (a1, a2) = (
                     support::parry_polygonal(&c.s.shape1),
                     support::parry_polygonal(&c.s.shape2),
@@ -778,8 +725,7 @@ fn manifold_tables() {
 }
 
 fn sweep_tables() {
-    use parry2d_f64::query::{sweep_time_of_impact, Sweep, SweepToiStatus, ToiProxy};
-    use smooth_ccd2d::RoundedPolygon;
+    use parry2d_f64::query::{sweep_time_of_impact, SweepToiStatus, ToiProxy};
     let d = SmoothDispatcher::default();
     println!("\n## parry's Box2D-style `sweep_time_of_impact`\n");
     println!(
@@ -791,28 +737,11 @@ fn sweep_tables() {
     for (label, spin) in [("no spin", false), ("spin ≤ 45° over the window", true)] {
         let mut rows = Vec::new();
         for seed in 0..support::BATCH as u64 {
-            let mut s = common::generate(ScenarioClass::RoundedPolygonEllipse, seed);
-            let (common::TestShape::RoundedPolygon(poly), common::TestShape::Ellipse(e)) = (&s.shape1, &s.shape2)
-            else {
-                continue;
-            };
-            let poly: RoundedPolygon = poly.clone();
-            let r = (e.half_x() * e.half_y()).sqrt();
-            if spin {
-                let turn = (s.motion1.angvel.abs() + s.motion2.angvel.abs()) * (s.t1 - s.t0);
-                if turn > core::f64::consts::FRAC_PI_4 {
-                    continue;
-                }
-            } else {
-                s.motion1.angvel = 0.0;
-                s.motion2.angvel = 0.0;
+            if let Some(pd) = PolygonDisc::new(seed, spin) {
+                rows.push((pd.s, pd.poly, pd.parry_poly, pd.radius));
             }
-            s.shape2 = common::TestShape::Ball(BallCurve { radius: r });
-            s.target = 0.0;
-            let Some(parry_poly) = poly.to_parry() else { continue };
-            rows.push((s, poly, parry_poly, r));
         }
-        let refs = common::par_map(&rows, |(s, ..)| s.reference_with_target(0.0));
+        let refs = par_map(&rows, |(s, ..)| s.reference_with_target(0.0));
         let (mut to, mut tp, mut wo, mut wp, mut failed, mut eo, mut ep) = (vec![], vec![], 0, 0, 0, vec![], vec![]);
         for ((s, poly, parry_poly, r), rf) in rows.iter().zip(&refs) {
             let ball = Ball::new(*r);
@@ -830,26 +759,10 @@ fn sweep_tables() {
                     ToiProxy::from_shape(parry_poly).unwrap(),
                     ToiProxy::from_shape(&ball).unwrap(),
                 );
-                let sa = Sweep::from_poses(
-                    &s.motion1.position_at_time(s.t0),
-                    &s.motion1.position_at_time(s.t1),
-                    s.motion1.local_center,
-                );
-                let sb = Sweep::from_poses(
-                    &s.motion2.position_at_time(s.t0),
-                    &s.motion2.position_at_time(s.t1),
-                    s.motion2.local_center,
-                );
+                let (sa, sb) = (sweep_of(&s.motion1, s.t0, s.t1), sweep_of(&s.motion2, s.t0, s.t1));
                 sweep_time_of_impact(&pa, &sa, &pb, &sb, 1.0, slop)
             };
-            let (a, b) = time_pair(
-                &mut || {
-                    black_box(ours());
-                },
-                &mut || {
-                    black_box(sweep());
-                },
-            );
+            let (a, b) = time_contenders(ours, sweep);
             to.push(a);
             tp.push(b);
             let so = sweep();

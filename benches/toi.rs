@@ -17,22 +17,18 @@
 //! Run with `cargo bench --bench toi` (add a filter such as `-- distance` for one kind). The
 //! ratios with the accuracy beside them are printed by `cargo bench --bench ratios`.
 
-#[path = "../tests/common/mod.rs"]
-#[allow(unused_imports)]
-mod common;
 mod support;
 
-use common::{generate, ScenarioClass, TestShape};
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
 use parry2d_f64::math::Pose;
 use parry2d_f64::query::{
-    sweep_time_of_impact, ContactManifold, DefaultQueryDispatcher, PersistentQueryDispatcher, QueryDispatcher, Sweep,
-    ToiProxy,
+    sweep_time_of_impact, ContactManifold, DefaultQueryDispatcher, PersistentQueryDispatcher, QueryDispatcher, ToiProxy,
 };
 use parry2d_f64::shape::{Ball, Shape};
-use smooth_ccd2d::{BallCurve, RoundedPolygon, SmoothDispatcher};
+use smooth_ccd2d::SmoothDispatcher;
 use std::time::Duration;
-use support::{split_batch, Case, BATCH};
+use support::scenarios::ScenarioClass;
+use support::{split_batch, sweep_of, Case, PolygonDisc, BATCH};
 
 fn short(g: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>) {
     g.sample_size(10)
@@ -70,45 +66,15 @@ fn bench_toi(c: &mut Criterion) {
     }
 }
 
-/// The pose of shape 2 in shape 1's frame at the window start.
-fn start_pose(c: &Case) -> Pose {
-    c.s.motion1.position_at_time(c.s.t0).inverse() * c.s.motion2.position_at_time(c.s.t0)
-}
-
-/// The window-start pose with the centres brought closer until this crate's signed distance is
-/// `depth` (bisection on the translation's scale).
-fn pose_at_depth(c: &Case, depth: f64, d: &SmoothDispatcher) -> Option<Pose> {
-    let p0 = start_pose(c);
-    let at = |k: f64| {
-        let mut p = p0;
-        p.translation *= k;
-        p
-    };
-    let dist = |k: f64| -> Option<f64> { Some(d.signed_distance(&at(k), &*c.g1, &*c.g2)?.ok()?.distance) };
-    let (mut lo, mut hi) = (0.0, 1.0);
-    if !(dist(hi)? > depth && dist(lo)? < depth) {
-        return None;
-    }
-    for _ in 0..60 {
-        let mid = 0.5 * (lo + hi);
-        if dist(mid)? > depth {
-            hi = mid;
-        } else {
-            lo = mid;
-        }
-    }
-    Some(at(hi))
-}
-
 fn bench_distance(c: &mut Criterion) {
     let d = SmoothDispatcher::default();
     for class in ScenarioClass::ALL {
         let cases: Vec<Case> = (0..BATCH as u64).map(|s| Case::new(class, s)).collect();
-        let apart: Vec<(&Case, Pose)> = cases.iter().map(|c| (c, start_pose(c))).collect();
+        let apart: Vec<(&Case, Pose)> = cases.iter().map(|c| (c, c.start_pose())).collect();
         let overlapping: Vec<(&Case, Pose)> = cases
             .iter()
             .filter_map(|c| {
-                let mut p = start_pose(c);
+                let mut p = c.start_pose();
                 p.translation *= 0.25;
                 let r = d.signed_distance(&p, &*c.g1, &*c.g2)?.ok()?;
                 (r.distance < 0.0).then_some((c, p))
@@ -157,7 +123,7 @@ fn bench_manifolds(c: &mut Criterion) {
             .filter_map(|seed| {
                 let c = Case::new(class, seed);
                 let size = c.s.size();
-                let p = pose_at_depth(&c, -0.01 * size, &d)?;
+                let p = c.pose_at_depth(-0.01 * size, &d)?;
                 let (a1, a2) = (
                     support::parry_polygonal(&c.s.shape1),
                     support::parry_polygonal(&c.s.shape2),
@@ -198,26 +164,13 @@ fn bench_sweep(c: &mut Criterion) {
     // area and the spins set to 0 (the sweep interpolates rotations differently).
     let set: Vec<_> = (0..BATCH as u64)
         .filter_map(|seed| {
-            let mut s = generate(ScenarioClass::RoundedPolygonEllipse, seed);
-            let (TestShape::RoundedPolygon(poly), TestShape::Ellipse(e)) = (&s.shape1, &s.shape2) else {
-                return None;
-            };
-            let poly: RoundedPolygon = poly.clone();
-            let r = (e.half_x() * e.half_y()).sqrt();
-            s.motion1.angvel = 0.0;
-            s.motion2.angvel = 0.0;
-            s.shape2 = TestShape::Ball(BallCurve { radius: r });
-            let parry_poly = poly.to_parry()?;
-            let sa = Sweep::from_poses(
-                &s.motion1.position_at_time(s.t0),
-                &s.motion1.position_at_time(s.t1),
-                s.motion1.local_center,
-            );
-            let sb = Sweep::from_poses(
-                &s.motion2.position_at_time(s.t0),
-                &s.motion2.position_at_time(s.t1),
-                s.motion2.local_center,
-            );
+            let PolygonDisc {
+                s,
+                poly,
+                parry_poly,
+                radius: r,
+            } = PolygonDisc::new(seed, false)?;
+            let (sa, sb) = (sweep_of(&s.motion1, s.t0, s.t1), sweep_of(&s.motion2, s.t0, s.t1));
             let slop = 1e-9 * s.size();
             Some((s, poly, parry_poly, Ball::new(r), sa, sb, slop))
         })

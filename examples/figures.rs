@@ -21,6 +21,10 @@
 //! * `fig6_appendix_d`: the heptagon spinning at 30 rad/s against an ellipse: the shapes up to the
 //!   impact and distanceSide(φ, t) with the tracked path.
 
+#[path = "common/mod.rs"]
+mod common;
+
+use common::appendix_d;
 use parry2d_f64::math::{Pose, Vector};
 use parry2d_f64::query::NonlinearRigidMotion;
 use plotters::coord::types::RangedCoordf64;
@@ -429,6 +433,40 @@ fn side_fwd_grids(
         }
     }
     (side, fwd)
+}
+
+/// A panel of `area`: `grid` over φ ∈ [−π, π] and its t range as a heat map with the zero level
+/// of `zero`, the tracked path `trace` (and the legend, when `labels`), and a colour bar.
+fn heat_panel<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    title: &str,
+    x_desc: &str,
+    grid: &Grid,
+    zero: &Grid,
+    trace: &[TraceEvent],
+    labels: bool,
+) -> Res
+where
+    DB::ErrorType: 'static,
+{
+    let (plot, bar) = area.split_horizontally(area.dim_in_pixel().0 - 70);
+    let vmax = grid.scale();
+    let mut c = plot_chart(&plot, title, (-PI, PI), grid.y, x_desc, "t")?;
+    draw_heat(&mut c, grid, vmax, zero)?;
+    draw_trace(&mut c, trace, labels)?;
+    if labels {
+        legend(&mut c, SeriesLabelPosition::UpperLeft)?;
+    }
+    colorbar(&bar, vmax, 40, 54)
+}
+
+/// The title of a figure of a moving pair: `on_hit(t)` for an impact at t, else the status.
+fn impact_title(hit: &smooth_ccd2d::TimeOfImpact, on_hit: impl FnOnce(f64) -> String) -> String {
+    if hit.status == ToiStatus::Hit {
+        on_hit(hit.time)
+    } else {
+        format!("no impact ({:?})", hit.status)
+    }
 }
 
 /// Draws the grid as cells (runs of equal colour merged) and the zero level of `zero`.
@@ -1038,14 +1076,12 @@ impl Figure for Fig4 {
         let (left, rest) = root.split_horizontally(560);
         let (mid, right) = rest.split_horizontally(620);
         let t_hit = self.hit.time;
-        let title = if self.hit.status == ToiStatus::Hit {
+        let title = impact_title(&self.hit, |t_hit| {
             format!(
                 "object1: v = ({}, {}), ω = {} rad/s; impact at t = {t_hit:.4}",
                 FIG4_VEL.0, FIG4_VEL.1, FIG4_SPIN
             )
-        } else {
-            format!("no impact ({:?})", self.hit.status)
-        };
+        });
         let mut c = world_chart(&left, &title, (-3.0, 3.0), (-2.6, 2.6))?;
         draw_dashed(&mut c, outline(&e2, &self.m2.start, 400), OBJ2.stroke_width(2))?;
         let times = [0.0, 0.25 * t_hit, 0.5 * t_hit, 0.75 * t_hit, t_hit, self.t_end];
@@ -1088,22 +1124,15 @@ impl Figure for Fig4 {
                 false,
             ),
         ] {
-            let (plot, bar) = area.split_horizontally(area.dim_in_pixel().0 - 70);
-            let vmax = grid.scale();
-            let mut c = plot_chart(
-                &plot,
+            heat_panel(
+                area,
                 name,
-                (-PI, PI),
-                (0.0, self.t_end),
                 "φ (normal angle of object1)",
-                "t",
+                grid,
+                &self.side,
+                &self.trace,
+                labels,
             )?;
-            draw_heat(&mut c, grid, vmax, &self.side)?;
-            draw_trace(&mut c, &self.trace, labels)?;
-            if labels {
-                legend(&mut c, SeriesLabelPosition::UpperLeft)?;
-            }
-            colorbar(&bar, vmax, 40, 54)?;
         }
         Ok(())
     }
@@ -1321,20 +1350,22 @@ struct Fig6 {
     hit: smooth_ccd2d::TimeOfImpact,
 }
 
-fn appendix_d() -> (RoundedPolygon, NonlinearRigidMotion, Ellipse, NonlinearRigidMotion) {
+/// The Appendix D scene of `tests/common/appendix_d.rs`: heptagon, its motion, ellipse, its motion.
+fn appendix_d_scene() -> (RoundedPolygon, NonlinearRigidMotion, Ellipse, NonlinearRigidMotion) {
     (
-        RoundedPolygon::regular(7, 1.0, 0.15),
-        NonlinearRigidMotion::new(Pose::new(v(-1.85, 0.0), 0.0), Vector::ZERO, v(2.0, 0.0), 30.0),
-        Ellipse::new(0.5, 1.5),
-        NonlinearRigidMotion::constant_position(Pose::IDENTITY),
+        appendix_d::heptagon(),
+        appendix_d::heptagon_motion(),
+        appendix_d::ellipse(),
+        appendix_d::ellipse_motion(),
     )
 }
 
 impl Fig6 {
     fn new() -> Res<Self> {
-        let (hept, m1, ell, m2) = appendix_d();
+        let (hept, m1, ell, m2) = appendix_d_scene();
         let mut trace = Vec::new();
-        let hit = time_of_impact_traced(&hept, &m1, &ell, &m2, 0.0, 1.0, &ToiOptions::default(), &mut trace)?;
+        let (t0, t1) = appendix_d::WINDOW;
+        let hit = time_of_impact_traced(&hept, &m1, &ell, &m2, t0, t1, &ToiOptions::default(), &mut trace)?;
         let t_max = if hit.status == ToiStatus::Hit {
             1.25 * hit.time
         } else {
@@ -1362,15 +1393,13 @@ impl Figure for Fig6 {
     where
         DB::ErrorType: 'static,
     {
-        let (hept, _, ell, _) = appendix_d();
+        let (hept, _, ell, _) = appendix_d_scene();
         let (left, rest) = root.split_horizontally(580);
         let (zoom, right) = rest.split_horizontally(500);
         let t_hit = self.hit.time;
-        let title = if self.hit.status == ToiStatus::Hit {
+        let title = impact_title(&self.hit, |t_hit| {
             format!("Heptagon at 30 rad/s, drifting at (2, 0): impact t = {t_hit:.5}")
-        } else {
-            format!("no impact ({:?})", self.hit.status)
-        };
+        });
         let mut c = world_chart(&left, &title, (-3.0, 1.0), (-1.7, 1.7))?;
         draw_dashed(&mut c, outline(&ell, &self.m2.start, 400), OBJ2.stroke_width(2))?;
         let n = 6;
@@ -1438,20 +1467,14 @@ impl Figure for Fig6 {
             legend(&mut c, SeriesLabelPosition::LowerLeft)?;
         }
 
-        let (plot, bar) = right.split_horizontally(right.dim_in_pixel().0 - 70);
-        let vmax = self.side.scale();
-        let mut c = plot_chart(
-            &plot,
+        heat_panel(
+            &right,
             "distanceSide(φ, t) and the tracked path",
-            (-PI, PI),
-            self.side.y,
             "φ (heptagon parameter: corner and edge pieces)",
-            "t",
-        )?;
-        draw_heat(&mut c, &self.side, vmax, &self.side)?;
-        draw_trace(&mut c, &self.trace, true)?;
-        legend(&mut c, SeriesLabelPosition::UpperLeft)?;
-        colorbar(&bar, vmax, 40, 54)?;
-        Ok(())
+            &self.side,
+            &self.side,
+            &self.trace,
+            true,
+        )
     }
 }

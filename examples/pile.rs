@@ -5,98 +5,35 @@
 //! distance in the narrow phase's contact manifolds, over the whole run and at the end) and the
 //! kinetic energy every 100 steps; writes `pile.svg` (the final configuration, each body's outline
 //! from its boundary curve, and the kinetic energy over time). Deterministic: the sizes, shapes
-//! and starting poses come from a fixed-seed generator.
+//! and starting poses come from a fixed-seed generator (the box pile of `tests/common/scenes.rs`).
 //!
 //! Run: `cargo run --release --example pile [output folder]` (default `target/examples-out`).
 
 #[path = "common/mod.rs"]
 mod common;
 
-use common::{out_dir, Panel, Scene, Svg};
+use common::scenes::{
+    insert_pile, pile_bodies, pile_walls as walls, PileShape, PILE_BODIES as BODIES, PILE_HALF_WIDTH as HALF_WIDTH,
+};
+use common::world::{World, GRAVITY};
+use common::{out_dir, worst_penetration, Panel, Svg};
 use parry2d_f64::query::QueryDispatcher;
 use rapier2d_f64::prelude::*;
-use smooth_ccd2d::{CapsuleEllipse, ConvexCurve, Ellipse, RoundedPolygon, SmoothDispatcher};
+use smooth_ccd2d::{ConvexCurve, SmoothDispatcher};
 use std::time::Instant;
 
-const BODIES: usize = 200;
-const COLUMNS: usize = 12;
-/// Inner half-width of the box; the floor's top face is at y = 0.
-const HALF_WIDTH: f64 = 6.0;
-const WALL_HEIGHT: f64 = 24.0;
 const MAX_STEPS: usize = 3000;
 const PRINT_EVERY: usize = 100;
 /// At rest: kinetic energy below this (J) for `REST_STEPS` consecutive steps.
 const REST_KE: f64 = 1e-3;
 const REST_STEPS: usize = 60;
 
-/// A small fixed-seed generator (64-bit LCG, top bits).
-struct Lcg(u64);
-
-impl Lcg {
-    fn next(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
-    fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.next()
-    }
-}
-
-/// A body's shape: kept as the curve (for the outline) and as rapier's shape.
-enum Body {
-    Ellipse(Ellipse),
-    Polygon(RoundedPolygon),
-    Capsule(CapsuleEllipse),
-}
-
-impl Body {
-    fn curve(&self) -> &dyn ConvexCurve {
-        match self {
-            Body::Ellipse(e) => e,
-            Body::Polygon(p) => p,
-            Body::Capsule(c) => c,
-        }
-    }
-    fn shared(&self) -> SharedShape {
-        match self {
-            Body::Ellipse(e) => SharedShape::new(*e),
-            Body::Polygon(p) => SharedShape::new(p.clone()),
-            Body::Capsule(c) => SharedShape::new(c.clone()),
-        }
-    }
-    fn colour(&self) -> &'static str {
-        match self {
-            Body::Ellipse(_) => "#9ecae1",
-            Body::Polygon(_) => "#fdae6b",
-            Body::Capsule(_) => "#a1d99b",
-        }
-    }
-}
-
-fn make_body(i: usize, rng: &mut Lcg) -> Body {
-    // Sizes span a factor of about 3 (bounding radii 0.15 to 0.45).
-    let size = rng.range(0.15, 0.45);
-    match i % 3 {
-        0 => Body::Ellipse(Ellipse::new(size, size * rng.range(0.3, 1.0))),
-        1 => {
-            let sides = 3 + (rng.next() * 6.0) as usize;
-            Body::Polygon(RoundedPolygon::regular(
-                sides,
-                0.85 * size,
-                0.15 * size * rng.range(0.3, 1.0),
-            ))
-        }
-        _ => {
-            let r1 = size * rng.range(0.35, 0.5);
-            Body::Capsule(CapsuleEllipse::new(
-                r1,
-                size * rng.range(0.1, 0.4),
-                size * rng.range(0.4, 0.7),
-            ))
-        }
+/// The fill colour of a body's outline.
+fn colour(shape: &PileShape) -> &'static str {
+    match shape {
+        PileShape::Ellipse(_) => "#9ecae1",
+        PileShape::Polygon(_) => "#fdae6b",
+        PileShape::Capsule(_) => "#a1d99b",
     }
 }
 
@@ -125,30 +62,14 @@ struct Run {
     end_manifold: f64,
     end_exact: f64,
     energy: Vec<(usize, f64)>,
-    scene: Scene,
-    bodies: Vec<(RigidBodyHandle, Body)>,
-}
-
-/// The box: floor (top face at y = 0) and two walls (inner faces at x = ±HALF_WIDTH), as
-/// (centre, half-extents).
-fn walls() -> [(Vector, Vector); 3] {
-    [
-        (Vector::new(0.0, -0.5), Vector::new(HALF_WIDTH + 1.0, 0.5)),
-        (
-            Vector::new(-HALF_WIDTH - 0.5, 0.5 * WALL_HEIGHT),
-            Vector::new(0.5, 0.5 * WALL_HEIGHT),
-        ),
-        (
-            Vector::new(HALF_WIDTH + 0.5, 0.5 * WALL_HEIGHT),
-            Vector::new(0.5, 0.5 * WALL_HEIGHT),
-        ),
-    ]
+    scene: World,
+    bodies: Vec<(RigidBodyHandle, PileShape)>,
 }
 
 /// The most negative exact signed distance over the narrow phase's contact pairs, at the
 /// colliders' current poses (`SmoothDispatcher::contact`: exact for the crate's pairs, parry's
 /// for the pairs it hands over).
-fn exact_penetration(scene: &Scene) -> f64 {
+fn exact_penetration(scene: &World) -> f64 {
     let d = SmoothDispatcher::default();
     let mut worst: f64 = 0.0;
     for pair in scene.narrow_phase.contact_pairs() {
@@ -173,38 +94,19 @@ fn simulate(smooth: bool, recycling: bool, verbose: bool) -> Run {
     } else {
         NarrowPhase::new()
     };
-    let mut scene = Scene::new(narrow_phase, Vector::new(0.0, -9.81));
+    let mut scene = World::new(narrow_phase);
     scene.params.contact_recycling = recycling;
-    for (c, h) in walls() {
-        scene.insert(
-            RigidBodyBuilder::fixed().translation(c),
-            ColliderBuilder::cuboid(h.x, h.y),
-        );
-    }
-    let mut rng = Lcg(0x005e_ed2d);
-    let spacing = 2.0 * HALF_WIDTH / COLUMNS as f64;
-    let mut bodies = Vec::new();
-    for i in 0..BODIES {
-        let body = make_body(i, &mut rng);
-        let (row, col) = (i / COLUMNS, i % COLUMNS);
-        let x = -HALF_WIDTH + spacing * (col as f64 + 0.5) + rng.range(-0.03, 0.03);
-        let y = 1.0 + 1.0 * row as f64;
-        let (h, _) = scene.insert(
-            RigidBodyBuilder::dynamic()
-                .translation(Vector::new(x, y))
-                .rotation(rng.range(-3.0, 3.0))
-                .angvel(rng.range(-2.0, 2.0)),
-            ColliderBuilder::new(body.shared()).friction(0.5),
-        );
-        bodies.push((h, body));
-    }
-    let kinetic = |scene: &Scene| {
+    let pile = pile_bodies();
+    let handles = insert_pile(&mut scene, &pile, PileShape::shared);
+    let bodies: Vec<(RigidBodyHandle, PileShape)> =
+        handles.into_iter().zip(pile.into_iter().map(|b| b.shape)).collect();
+    let kinetic = |scene: &World| {
         bodies
             .iter()
             .map(|(h, _)| scene.bodies[*h].kinetic_energy())
             .sum::<f64>()
     };
-    let asleep = |scene: &Scene| bodies.iter().filter(|(h, _)| scene.bodies[*h].is_sleeping()).count();
+    let asleep = |scene: &World| bodies.iter().filter(|(h, _)| scene.bodies[*h].is_sleeping()).count();
 
     if verbose {
         println!(
@@ -220,12 +122,12 @@ fn simulate(smooth: bool, recycling: bool, verbose: bool) -> Run {
     let mut steps = 0;
     while steps < MAX_STEPS && quiet < REST_STEPS {
         let t = Instant::now();
-        scene.step();
+        scene.step(GRAVITY, &());
         let dt = t.elapsed().as_secs_f64();
         steps += 1;
         total += dt;
         max_step = max_step.max(dt);
-        let pen = scene.worst_penetration();
+        let pen = worst_penetration(&scene);
         if pen < worst_manifold.0 {
             worst_manifold = (pen, steps);
         }
@@ -251,7 +153,7 @@ fn simulate(smooth: bool, recycling: bool, verbose: bool) -> Run {
         max_step,
         worst_manifold,
         worst_exact,
-        end_manifold: scene.worst_penetration(),
+        end_manifold: worst_penetration(&scene),
         end_exact: exact_penetration(&scene),
         energy,
         scene,
@@ -293,9 +195,9 @@ fn summary(r: &Run) {
         .max_by(|a, b| a.1.total_cmp(&b.1))
         .expect("bodies");
     let kind = match r.bodies[i].1 {
-        Body::Ellipse(_) => "ellipse",
-        Body::Polygon(_) => "rounded polygon",
-        Body::Capsule(_) => "CapsuleEllipse",
+        PileShape::Ellipse(_) => "ellipse",
+        PileShape::Polygon(_) => "rounded polygon",
+        PileShape::Capsule(_) => "CapsuleEllipse",
     };
     println!(
         "  most energetic body at the end: #{i} ({kind}), KE {ke:.3e} J, angular velocity {:.3e} rad/s",
@@ -306,7 +208,7 @@ fn summary(r: &Run) {
 fn main() {
     let dir = out_dir();
     let started = Instant::now();
-    // make_body picks the kind from i mod 3.
+    // The pile's body i is of kind i mod 3.
     let count = |kind: usize| (0..BODIES).filter(|i| i % 3 == kind).count();
     println!(
         "pile: {BODIES} bodies ({} ellipses, {} rounded polygons, {} CapsuleEllipses, sizes 0.15-0.45) \
@@ -378,7 +280,7 @@ fn main() {
     }
     for (h, b) in bodies {
         let pose = *scene.bodies[*h].position();
-        svg.polyline(&p, &curve_outline(b.curve(), &pose, 64), true, "#333", 0.6, b.colour());
+        svg.polyline(&p, &curve_outline(b.curve(), &pose, 64), true, "#333", 0.6, colour(b));
         svg.circle(&p, pose.translation, 0.8, "#333");
     }
     svg.end_panel();

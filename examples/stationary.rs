@@ -1,12 +1,15 @@
 //! Prints the stationary distance between the specification's two ellipses (object1 a1 = 0.5,
 //! b1 = 0.8 at C1 = (−1.5, 0), angle 0.3; object2 a2 = 0.5, b2 = 2 at C2 = (1, 0.5), angle 1) with its
-//! witness points, then the time of impact of the Appendix D scene.
+//! witness points, then the time of impact of the Appendix D scene (`tests/common/appendix_d.rs`).
 //!
 //! Run: `cargo run --release --example stationary`
 
+#[path = "common/mod.rs"]
+mod common;
+
+use common::appendix_d::{heptagon_motion, impact, ANGVEL};
 use parry2d_f64::math::{Pose, Vector};
-use parry2d_f64::query::NonlinearRigidMotion;
-use smooth_ccd2d::{stationary_distance, time_of_impact, DistanceOptions, Ellipse, RoundedPolygon, ToiOptions};
+use smooth_ccd2d::{stationary_distance, DistanceOptions, Ellipse};
 
 fn main() {
     let e1 = Ellipse::new(0.5, 0.8);
@@ -26,23 +29,14 @@ fn main() {
     println!("  normal 1      {:?} (world)", pos1.rotation * d.normal1);
     println!("  φ (object1)   {:.12} (normal angle)", d.phi);
 
-    let hept = RoundedPolygon::regular(7, 1.0, 0.15);
-    let ell = Ellipse::new(0.5, 1.5);
-    let m1 = NonlinearRigidMotion::new(
-        Pose::new(Vector::new(-1.85, 0.0), 0.0),
-        Vector::ZERO,
-        Vector::new(2.0, 0.0),
-        30.0,
-    );
-    let m2 = NonlinearRigidMotion::constant_position(Pose::IDENTITY);
-    let r = time_of_impact(&hept, &m1, &ell, &m2, 0.0, 1.0, &ToiOptions::default()).expect("finite motions");
-    let p1 = m1.position_at_time(r.time);
+    let r = impact();
+    let p1 = heptagon_motion().position_at_time(r.time);
     println!("\nAppendix D: heptagon spinning at 30 rad/s against an ellipse");
     println!("  status        {:?}", r.status);
     println!(
         "  time          {:.15} s ({:.3} turns)",
         r.time,
-        30.0 * r.time / std::f64::consts::TAU
+        ANGVEL * r.time / std::f64::consts::TAU
     );
     println!("  contact point {:?} (world)", p1 * r.point1);
     println!(

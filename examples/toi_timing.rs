@@ -6,10 +6,9 @@
 //! disc), `LIST=1` prints the hits around the median.
 //!
 //! `cargo run --release --example toi_timing`
-#[path = "../tests/common/mod.rs"]
-#[allow(unused_imports)]
+#[path = "common/mod.rs"]
 mod common;
-use common::{generate, ScenarioClass, TestShape};
+use common::scenarios::{generate, Scenario, ScenarioClass, TestShape};
 use smooth_ccd2d::{time_of_impact, ToiOptions, ToiStatus};
 use std::time::Instant;
 
@@ -20,7 +19,7 @@ fn main() {
         ("eb", ScenarioClass::EllipseBall),
     ] {
         let sc: Vec<_> = (0..200).map(|s| generate(class, s)).collect();
-        let run = |s: &common::Scenario| {
+        let run = |s: &Scenario| {
             match (&s.shape1, &s.shape2) {
                 (TestShape::Ellipse(a), TestShape::Ellipse(b)) => {
                     time_of_impact(a, &s.motion1, b, &s.motion2, s.t0, s.t1, &opts)
@@ -35,16 +34,7 @@ fn main() {
         let d = smooth_ccd2d::SmoothDispatcher::default();
         let shapes: Vec<(Box<dyn parry2d_f64::shape::Shape>, Box<dyn parry2d_f64::shape::Shape>)> = sc
             .iter()
-            .map(|s| {
-                let f = |t: &TestShape| -> Box<dyn parry2d_f64::shape::Shape> {
-                    match t {
-                        TestShape::Ellipse(e) => Box::new(*e),
-                        TestShape::Ball(b) => Box::new(parry2d_f64::shape::Ball::new(b.radius)),
-                        _ => unreachable!(),
-                    }
-                };
-                (f(&s.shape1), f(&s.shape2))
-            })
+            .map(|s| (s.shape1.parry_shape(), s.shape2.parry_shape()))
             .collect();
         let disp = std::env::var("DISP").is_ok();
         let mut best = vec![f64::INFINITY; sc.len()];

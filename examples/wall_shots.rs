@@ -1,5 +1,6 @@
-//! Shots of fast-spinning ellipses and rounded heptagons at a thin fixed wall in rapier, CCD on,
-//! over a grid of speeds (100–1000 m/s) and spins (0 to ±600 rad/s), three ways:
+//! Shots of fast-spinning ellipses and rounded heptagons at a thin fixed wall in rapier, CCD on
+//! (the wall-shot scene of `tests/common/scenes.rs`), over a grid of speeds (100–1000 m/s) and
+//! spins (0 to ±600 rad/s), three ways:
 //!
 //! * **smooth**: this crate's shapes with `NarrowPhase::with_query_dispatcher(SmoothDispatcher)`;
 //! * **rapier polygons**: the same shapes approximated by parry's polygons (a 32-gon inscribed in
@@ -20,16 +21,11 @@
 #[path = "common/mod.rs"]
 mod common;
 
-use common::{max_x, out_dir, outline, Panel, Scene, Svg};
+use common::scenes::{shot_shape, wall_shot, Shot, ShotBody, ShotMethod, WALL_FACE as FACE, WALL_HALF, WALL_X};
+use common::{max_x, out_dir, outline, Panel, Svg};
 use rapier2d_f64::prelude::*;
-use smooth_ccd2d::{Ellipse, RoundedPolygon, SmoothDispatcher};
 use std::time::Instant;
 
-/// The wall: centre x, half-thickness (0.05 thick), half-height.
-const WALL_X: f64 = 5.0;
-const WALL_HALF: f64 = 0.025;
-const WALL_HALF_HEIGHT: f64 = 3.0;
-const FACE: f64 = WALL_X - WALL_HALF;
 /// Steps per shot (1/60 s each).
 const STEPS: usize = 20;
 /// A step ending with the shape this close to the face counts as the first contact.
@@ -37,82 +33,26 @@ const CONTACT_TOL: f64 = 0.01;
 const SPEEDS: usize = 10;
 const SPINS: usize = 10;
 
-#[derive(Clone, Copy, PartialEq, Eq)]
-enum Kind {
-    Ellipse,
-    Heptagon,
-}
-
-impl Kind {
-    fn short(self) -> &'static str {
-        match self {
-            Kind::Ellipse => "ellipse",
-            Kind::Heptagon => "heptagon",
-        }
-    }
-
-    fn name(self) -> &'static str {
-        match self {
-            Kind::Ellipse => "ellipse 0.5 x 0.2",
-            Kind::Heptagon => "rounded heptagon r 0.4",
-        }
+fn short_name(kind: ShotBody) -> &'static str {
+    match kind {
+        ShotBody::Ellipse => "ellipse",
+        ShotBody::Heptagon => "heptagon",
     }
 }
 
-#[derive(Clone, Copy, PartialEq, Eq)]
-enum Method {
-    Smooth,
-    RapierPolygons,
-    ParryDefault,
-}
-
-impl Method {
-    fn name(self) -> &'static str {
-        match self {
-            Method::Smooth => "SmoothDispatcher",
-            Method::RapierPolygons => "rapier polygons",
-            Method::ParryDefault => "parry default",
-        }
-    }
-
-    fn narrow_phase(self) -> NarrowPhase {
-        match self {
-            Method::Smooth => NarrowPhase::with_query_dispatcher(SmoothDispatcher::default()),
-            _ => NarrowPhase::new(),
-        }
+fn kind_name(kind: ShotBody) -> &'static str {
+    match kind {
+        ShotBody::Ellipse => "ellipse 0.5 x 0.2",
+        ShotBody::Heptagon => "rounded heptagon r 0.4",
     }
 }
 
-const HEPTAGON_R: f64 = 0.4;
-
-fn shape(kind: Kind, method: Method) -> SharedShape {
-    match (kind, method) {
-        (Kind::Ellipse, Method::RapierPolygons) => {
-            let pts = (0..32)
-                .map(|i| {
-                    let e = std::f64::consts::TAU * i as f64 / 32.0;
-                    Vector::new(0.5 * e.cos(), 0.2 * e.sin())
-                })
-                .collect();
-            SharedShape::convex_polyline(pts).expect("a convex 32-gon")
-        }
-        (Kind::Ellipse, _) => SharedShape::new(Ellipse::new(0.5, 0.2)),
-        (Kind::Heptagon, m) => {
-            let p = RoundedPolygon::regular(7, HEPTAGON_R, 0.15 * HEPTAGON_R);
-            if m == Method::RapierPolygons {
-                SharedShape::new(p.to_parry().expect("a heptagon"))
-            } else {
-                SharedShape::new(p)
-            }
-        }
+fn method_name(method: ShotMethod) -> &'static str {
+    match method {
+        ShotMethod::Smooth => "SmoothDispatcher",
+        ShotMethod::Polygon => "rapier polygons",
+        ShotMethod::ParryDefault => "parry default",
     }
-}
-
-#[derive(Clone, Copy)]
-struct Shot {
-    speed: f64,
-    spin: f64,
-    angle0: f64,
 }
 
 /// 10 speeds × 10 spins: speeds 100, 200, …, 1000 m/s (1.7 to 17 m per step); spins 0, +67, −133,
@@ -142,27 +82,13 @@ struct Outcome {
     max_depth: f64,
 }
 
-fn run(kind: Kind, method: Method, shot: Shot) -> Outcome {
-    let mut scene = Scene::new(method.narrow_phase(), Vector::ZERO);
-    scene.insert(
-        RigidBodyBuilder::fixed().translation(Vector::new(WALL_X, 0.0)),
-        ColliderBuilder::cuboid(WALL_HALF, WALL_HALF_HEIGHT),
-    );
-    let shape = shape(kind, method);
-    let (h, _) = scene.insert(
-        RigidBodyBuilder::dynamic()
-            .translation(Vector::ZERO)
-            .rotation(shot.angle0)
-            .linvel(Vector::new(shot.speed, 0.0))
-            .angvel(shot.spin)
-            .ccd_enabled(true)
-            .can_sleep(false),
-        ColliderBuilder::new(shape.clone()),
-    );
-    let mut poses = vec![*scene.bodies[h].position()];
+fn run(kind: ShotBody, method: ShotMethod, shot: Shot) -> Outcome {
+    let shape = shot_shape(kind, method);
+    let (mut world, h) = wall_shot(method, shape.clone(), shot);
+    let mut poses = vec![*world.bodies[h].position()];
     for _ in 0..STEPS {
-        scene.step();
-        poses.push(*scene.bodies[h].position());
+        world.step(Vector::ZERO, &());
+        poses.push(*world.bodies[h].position());
     }
     let tunnelled = poses.iter().any(|p| p.translation.x > WALL_X);
     let depths: Vec<f64> = poses.iter().map(|p| max_x(shape.as_ref(), p) - FACE).collect();
@@ -180,8 +106,8 @@ fn run(kind: Kind, method: Method, shot: Shot) -> Outcome {
 }
 
 struct Row {
-    kind: Kind,
-    method: Method,
+    kind: ShotBody,
+    method: ShotMethod,
     outcomes: Vec<Outcome>,
     seconds: f64,
 }
@@ -189,8 +115,8 @@ struct Row {
 fn main() {
     let dir = out_dir();
     let shots = shots();
-    let kinds = [Kind::Ellipse, Kind::Heptagon];
-    let methods = [Method::Smooth, Method::RapierPolygons, Method::ParryDefault];
+    let kinds = [ShotBody::Ellipse, ShotBody::Heptagon];
+    let methods = [ShotMethod::Smooth, ShotMethod::Polygon, ShotMethod::ParryDefault];
     let mut rows = Vec::new();
     for kind in kinds {
         for method in methods {
@@ -228,8 +154,8 @@ fn main() {
             .fold(f64::NEG_INFINITY, |m, o| m.max(o.max_depth));
         println!(
             "{:<24} {:<18} {:>5} {:>10} {:>12.3e} {:>12.3e} {:>14.3e} {:>8.2}",
-            r.kind.name(),
-            r.method.name(),
+            kind_name(r.kind),
+            method_name(r.method),
             r.outcomes.len(),
             tunnelled,
             worst,
@@ -249,8 +175,8 @@ fn main() {
         if !through.is_empty() && through.len() <= 8 {
             println!(
                 "tunnelled ({}, {}; speed m/s / spin rad/s): {}",
-                r.kind.name(),
-                r.method.name(),
+                kind_name(r.kind),
+                method_name(r.method),
                 through.join(", ")
             );
         }
@@ -292,9 +218,13 @@ fn draw(rows: &[Row], path: &std::path::Path) {
         let tunnelled = r.outcomes.iter().filter(|o| o.tunnelled).count();
         svg.begin_panel(
             &p,
-            &format!("{}: {} ({tunnelled} tunnelled)", r.kind.short(), r.method.name()),
+            &format!(
+                "{}: {} ({tunnelled} tunnelled)",
+                short_name(r.kind),
+                method_name(r.method)
+            ),
         );
-        let shape = shape(r.kind, r.method);
+        let shape = shot_shape(r.kind, r.method);
         for s in 0..SPEEDS {
             let lane_y = s as f64 * lane;
             let shift = Vector::new(0.0, lane_y);

@@ -1,25 +1,13 @@
 //! SmoothDispatcher's stationary queries against parry's own (GJK/EPA through the shapes'
 //! support maps) over random configurations, penetration included, and against closed forms.
 
+mod common;
+
+use common::rng::Rng;
 use parry2d_f64::math::{Pose, Vector};
 use parry2d_f64::query::{self, DefaultQueryDispatcher, QueryDispatcher};
 use parry2d_f64::shape::{Ball, Capsule, Cuboid, HalfSpace, Shape};
 use smooth_ccd2d::{CapsuleEllipse, DistanceStatus, Ellipse, RoundedPolygon, SmoothDispatcher};
-
-/// splitmix64: a small deterministic generator.
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    fn uniform(&mut self, a: f64, b: f64) -> f64 {
-        a + (b - a) * ((self.next() >> 11) as f64 / (1u64 << 53) as f64)
-    }
-}
 
 fn random_shape(kind: &str, rng: &mut Rng) -> Box<dyn Shape> {
     let s = rng.uniform(0.3, 1.5);
@@ -27,11 +15,11 @@ fn random_shape(kind: &str, rng: &mut Rng) -> Box<dyn Shape> {
         "ellipse" => Box::new(Ellipse::new(s, s * rng.uniform(0.1, 1.0))),
         "ball" => Box::new(Ball::new(s)),
         "rounded" => Box::new(RoundedPolygon::regular(
-            (rng.next() % 6 + 3) as usize,
+            (rng.next_u64() % 6 + 3) as usize,
             s,
             s * rng.uniform(0.02, 0.4),
         )),
-        "sharp" => Box::new(RoundedPolygon::regular((rng.next() % 6 + 3) as usize, s, 0.0)),
+        "sharp" => Box::new(RoundedPolygon::regular((rng.next_u64() % 6 + 3) as usize, s, 0.0)),
         "capsule_ellipse" => Box::new(CapsuleEllipse::new(
             s * 0.5,
             s * rng.uniform(0.2, 1.0),
@@ -103,7 +91,7 @@ const KINDS: [(&str, &str); 8] = [
 fn distance_and_contact_agree_with_parry_over_random_configurations() {
     let d = SmoothDispatcher::default();
     let n = 10_000;
-    let mut rng = Rng(7);
+    let mut rng = Rng::new(7);
     for (k1, k2) in KINDS {
         let mut iters = Vec::with_capacity(n);
         let (mut worst_sep, mut worst_pen, mut penetrating, mut parry_off) = (0.0f64, 0.0f64, 0usize, 0usize);

@@ -6,24 +6,21 @@
 //! * The fuzz batch of `tests/adversarial.rs` (seed `0x7_5EED`, 40,000 cases): every query of
 //!   the crate on each case (`reliability::run_case`), FNV-1a over the bits of every number and
 //!   status returned, combined per scenario class.
-//! * rapier: the final state of `world::mixed_pile` (153 bodies, fast CCD shots) after 250 steps
+//! * rapier: the final state of `scenes::mixed_pile` (153 bodies, fast CCD shots) after 250 steps
 //!   with `SmoothDispatcher` as the narrow phase, on one worker (FNV-1a over the bits of every
 //!   body's pose and velocities).
 //!
 //! Run with `cargo test --test golden -- --nocapture` to see the digests.
 
-#[allow(dead_code)]
-#[path = "common/reference.rs"]
-mod reference;
+mod common;
 mod reliability;
-#[path = "common/world.rs"]
-mod world;
 
+use common::scenes::mixed_pile;
+use common::world::{state_hash, World, GRAVITY};
 use rapier2d_f64::prelude::*;
 use reliability::{generate, run_case, CLASSES};
 use smooth_ccd2d::SmoothDispatcher;
 use std::collections::BTreeMap;
-use world::World;
 
 /// The fuzz batch of `tests/adversarial.rs`.
 const FUZZ_SEED: u64 = 0x0007_5EED;
@@ -80,11 +77,11 @@ fn rapier_scene_final_state_keeps_its_recorded_bits() {
     const STEPS: usize = 250;
     let mut w = World::new(NarrowPhase::with_query_dispatcher(SmoothDispatcher::default()));
     w.pipeline.configure_thread_pool(1).expect("thread pool");
-    let handles = world::mixed_pile(&mut w);
+    let handles = mixed_pile(&mut w);
     for _ in 0..STEPS {
-        w.step(Vector::new(0.0, -9.81), &());
+        w.step(GRAVITY, &());
     }
-    let (hash, _) = world::state_hash(&w, &handles);
+    let (hash, _) = state_hash(&w, &handles);
     println!(
         "golden: rapier scene, {} bodies, {STEPS} steps, final-state hash 0x{hash:016X}",
         handles.len()

@@ -3,6 +3,9 @@
 //! References are independent: dense boundary sampling (chord polygons), closed forms, and
 //! parry's own shapes.
 
+mod common;
+
+use common::rng::Rng;
 use core::f64::consts::PI;
 use parry2d_f64::mass_properties::MassProperties;
 use parry2d_f64::math::{Pose, Vector};
@@ -11,25 +14,6 @@ use parry2d_f64::shape::{
     Ball, ConvexPolygon, Cuboid, FeatureId, HalfSpace, PolygonalFeature, RoundShape, Shape, ShapeType, TypedShape,
 };
 use smooth_ccd2d::{CapsuleEllipse, ConvexCurve, CurvePoint, CustomCurve, Dual2, Ellipse, RoundedPolygon};
-
-/// splitmix64.
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    fn uniform(&mut self, a: f64, b: f64) -> f64 {
-        a + (b - a) * ((self.next() >> 11) as f64 / (1u64 << 53) as f64)
-    }
-    fn unit(&mut self) -> Vector {
-        let a = self.uniform(-PI, PI);
-        Vector::new(a.cos(), a.sin())
-    }
-}
 
 /// A user curve for the tests: an ellipse parametrised by its eccentric anomaly (eq. 1), centred
 /// off the origin, with only `eval` and `bounding_radius` implemented (so the default
@@ -377,13 +361,13 @@ fn custom_curve_mass_matches_the_wrapped_shapes_closed_form() {
 
 #[test]
 fn ray_casts_match_dense_sampling() {
-    let mut rng = Rng(7);
+    let mut rng = Rng::new(7);
     for c in cases() {
         let mut hits = 0;
         for _ in 0..400 {
-            let o = rng.unit() * c.size * rng.uniform(1.05, 3.0);
+            let o = rng.direction() * c.size * rng.uniform(1.05, 3.0);
             // Aim near the shape so that most rays hit.
-            let target = rng.unit() * c.size * rng.uniform(0.0, 1.2);
+            let target = rng.direction() * c.size * rng.uniform(0.0, 1.2);
             let d = (target - o) * rng.uniform(0.2, 5.0);
             let ray = Ray::new(o, d);
             let reference = ray_polygon(&c.boundary, o, d).filter(|(t0, t1)| *t1 >= 0.0 && *t0 >= 0.0);
@@ -432,17 +416,17 @@ fn ray_casts_match_dense_sampling() {
 
 #[test]
 fn ray_starting_inside_follows_parry_solid_semantics() {
-    let mut rng = Rng(11);
+    let mut rng = Rng::new(11);
     for c in cases() {
         for _ in 0..100 {
             // A point strictly inside: a convex combination of boundary samples.
-            let i = (rng.next() as usize) % c.boundary.len();
-            let j = (rng.next() as usize) % c.boundary.len();
+            let i = (rng.next_u64() as usize) % c.boundary.len();
+            let j = (rng.next_u64() as usize) % c.boundary.len();
             let o = c.boundary[i].lerp(c.boundary[j], rng.uniform(0.2, 0.8));
             if polygon_signed_distance(&c.boundary, o) > -1e-6 * c.size {
                 continue;
             }
-            let d = rng.unit() * rng.uniform(0.1, 10.0);
+            let d = rng.direction() * rng.uniform(0.1, 10.0);
             let ray = Ray::new(o, d);
             let solid = c.shape.cast_local_ray_and_get_normal(&ray, f64::MAX, true).unwrap();
             assert_eq!(solid.time_of_impact, 0.0, "{}", c.name);
@@ -476,7 +460,7 @@ fn ray_starting_inside_follows_parry_solid_semantics() {
 
 #[test]
 fn point_projection_on_1_to_1000_ellipses_matches_dense_sampling() {
-    let mut rng = Rng(3);
+    let mut rng = Rng::new(3);
     for (a, b) in [(1.0, 1e-3), (1e-3, 1.0), (50.0, 0.05)] {
         let e = Ellipse::new(a, b);
         let boundary = dense_ellipse(&e, 400_000);
@@ -494,7 +478,7 @@ fn point_projection_on_1_to_1000_ellipses_matches_dense_sampling() {
         for _ in 0..300 {
             // Mostly near the boundary, on all scales, including near the tips.
             let ang = rng.uniform(-PI, PI);
-            let rad = match rng.next() % 4 {
+            let rad = match rng.next_u64() % 4 {
                 0 => rng.uniform(0.0, 1.0),
                 1 => 1.0 + rng.uniform(-1e-3, 1e-3),
                 2 => rng.uniform(1.0, 3.0),
@@ -530,10 +514,10 @@ fn point_projection_on_1_to_1000_ellipses_matches_dense_sampling() {
 
 #[test]
 fn point_projection_matches_dense_sampling_for_every_shape() {
-    let mut rng = Rng(5);
+    let mut rng = Rng::new(5);
     for c in cases() {
         for _ in 0..300 {
-            let x = rng.unit() * c.size * rng.uniform(0.0, 2.0);
+            let x = rng.direction() * c.size * rng.uniform(0.0, 2.0);
             let reference = polygon_signed_distance(&c.boundary, x);
             let pr = c.shape.project_local_point(x, false);
             let ours = (pr.point - x).length();
@@ -572,11 +556,11 @@ fn support_map_matches_convex_curve_support_point() {
         ),
         (Box::new(custom_ellipse()), Box::new(custom_ellipse())),
     ];
-    let mut rng = Rng(9);
+    let mut rng = Rng::new(9);
     for (shape, curve) in &curves {
         let sm = shape.as_support_map().unwrap();
         for _ in 0..200 {
-            let n = rng.unit();
+            let n = rng.direction();
             let expected = curve.support_point(n);
             for scale in [1.0, 1e-200, 3.7, 1e200] {
                 let p = sm.local_support_point(n * scale);
@@ -605,10 +589,10 @@ fn feature_of(shape: &dyn Shape, dir: Vector) -> PolygonalFeature {
 
 #[test]
 fn polygonal_features_are_segments_touching_the_support_level() {
-    let mut rng = Rng(13);
+    let mut rng = Rng::new(13);
     for c in cases() {
         let sm = c.shape.as_support_map().unwrap();
-        let mut dirs: Vec<Vector> = (0..300).map(|_| rng.unit()).collect();
+        let mut dirs: Vec<Vector> = (0..300).map(|_| rng.direction()).collect();
         dirs.extend([
             Vector::X,
             -Vector::X,
@@ -670,7 +654,7 @@ fn default_dispatcher_contact_manifolds_on_ellipse_pairs_do_not_panic() {
     let e1 = Ellipse::new(1.0, 0.5);
     let e2 = Ellipse::new(0.7, 0.2);
     let cuboid = Cuboid::new(Vector::new(2.0, 0.3));
-    let mut rng = Rng(17);
+    let mut rng = Rng::new(17);
     let others: Vec<(&str, Box<dyn Shape>)> = vec![
         ("ellipse", Box::new(e2)),
         ("cuboid", Box::new(cuboid)),
@@ -687,7 +671,7 @@ fn default_dispatcher_contact_manifolds_on_ellipse_pairs_do_not_panic() {
     for (name, other) in &others {
         let mut found = 0;
         for _ in 0..200 {
-            let dir = rng.unit();
+            let dir = rng.direction();
             let gap = rng.uniform(-0.2, 0.3);
             let angle = rng.uniform(-PI, PI);
             // Place shape 2 along dir at roughly the gap.
@@ -753,9 +737,9 @@ fn resting_flat_sides_give_two_point_manifolds() {
 fn distance_and_contact_work_through_support_maps() {
     let e = Ellipse::new(2.0, 0.3);
     let ball = Ball::new(0.25);
-    let mut rng = Rng(21);
+    let mut rng = Rng::new(21);
     for _ in 0..100 {
-        let c = rng.unit() * rng.uniform(2.5, 4.0);
+        let c = rng.direction() * rng.uniform(2.5, 4.0);
         let pos2 = Pose::new(c, 0.0);
         let d = query::distance(&Pose::IDENTITY, &e, &pos2, &ball).unwrap().distance;
         let exact = (e.project_local_point(c, true).point - c).length() - 0.25;
@@ -785,7 +769,7 @@ fn distance_and_contact_work_through_support_maps() {
     let parry_p = p.to_parry().unwrap();
     let cub = Cuboid::new(Vector::new(0.4, 0.2));
     for _ in 0..50 {
-        let pos2 = Pose::new(rng.unit() * rng.uniform(1.0, 3.0), rng.uniform(-PI, PI));
+        let pos2 = Pose::new(rng.direction() * rng.uniform(1.0, 3.0), rng.uniform(-PI, PI));
         let ours = query::contact(&Pose::IDENTITY, &p, &pos2, &cub, 1.0).unwrap();
         let theirs = query::contact(&Pose::IDENTITY, &parry_p, &pos2, &cub, 1.0).unwrap();
         assert_eq!(ours.is_some(), theirs.is_some());

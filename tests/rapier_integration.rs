@@ -3,14 +3,16 @@
 //!
 //! Run optimised (the crate's test profile is `opt-level = 3`); each test prints what it measures.
 
+mod common;
+
+use common::scenes::{
+    shot_shape, wall_shot, Shot, ShotBody, ShotMethod, WALL_FACE, WALL_HALF, WALL_HALF_HEIGHT, WALL_X,
+};
+use common::world::{state_hash, World, GRAVITY};
 use rapier2d_f64::prelude::*;
 use smooth_ccd2d::{Ellipse, RoundedPolygon, SmoothDispatcher};
 use std::sync::mpsc::{channel, Receiver};
 use std::time::Instant;
-use world::World;
-
-#[path = "common/world.rs"]
-mod world;
 
 /// A rapier scene driven by `PhysicsPipeline::step`, recording collision events.
 struct Scene {
@@ -59,8 +61,6 @@ impl Scene {
     }
 }
 
-const G: f64 = -9.81;
-
 fn ground(scene: &mut Scene) {
     // Top face at y = 0.5.
     scene.insert(RigidBodyBuilder::fixed(), ColliderBuilder::cuboid(20.0, 0.5));
@@ -68,7 +68,7 @@ fn ground(scene: &mut Scene) {
 
 #[test]
 fn ellipse_settles_on_its_short_semi_axis() {
-    let mut scene = Scene::new(true, Vector::new(0.0, G));
+    let mut scene = Scene::new(true, GRAVITY);
     ground(&mut scene);
     let h = scene.insert(
         RigidBodyBuilder::dynamic()
@@ -113,7 +113,7 @@ fn rounded_polygon_resting_on_a_face_stays_still() {
     // On a box face (parry's polygonal path: neither side strictly convex) and on a half-space
     // (this crate's two-point manifold); both grounds have their surface at y = 0.5.
     for on_halfspace in [false, true] {
-        let mut scene = Scene::new(true, Vector::new(0.0, G));
+        let mut scene = Scene::new(true, GRAVITY);
         if on_halfspace {
             scene.insert(
                 RigidBodyBuilder::fixed().translation(Vector::new(0.0, 0.5)),
@@ -160,77 +160,13 @@ fn rounded_polygon_resting_on_a_face_stays_still() {
     }
 }
 
-/// The thin wall of the shots: 0.05 thick, its faces at x = 4.975 and 5.025.
-const WALL_X: f64 = 5.0;
-const WALL_FACE: f64 = 4.975;
-
-/// One shot at the wall: body, launch speed (m/s, along +x), spin (rad/s), initial angle.
-#[derive(Clone, Copy)]
-struct Shot {
-    speed: f64,
-    spin: f64,
-    angle0: f64,
-}
-
-/// How a shot is simulated: the shape and the narrow phase.
-#[derive(Clone, Copy, PartialEq, Eq, Debug)]
-enum Method {
-    /// This crate's shape, `SmoothDispatcher`.
-    Smooth,
-    /// The shape approximated by parry's convex polygon (32-gon for the ellipse,
-    /// `RoundConvexPolygon` for the heptagon), rapier's default narrow phase and its own sweeps.
-    Polygon,
-    /// This crate's shape, parry's `DefaultQueryDispatcher`.
-    ParryDefault,
-}
-
-#[derive(Clone, Copy, PartialEq, Eq, Debug)]
-enum Body {
-    /// Ellipse 0.5 × 0.2.
-    Ellipse,
-    /// Rounded regular heptagon, circumradius 0.4, corner radius 0.06.
-    Heptagon,
-}
-
-fn shot_shape(body: Body, method: Method) -> SharedShape {
-    match (body, method) {
-        (Body::Ellipse, Method::Polygon) => SharedShape::convex_polyline(
-            (0..32)
-                .map(|i| {
-                    let a = std::f64::consts::TAU * i as f64 / 32.0;
-                    Vector::new(0.5 * a.cos(), 0.2 * a.sin())
-                })
-                .collect(),
-        )
-        .expect("a convex 32-gon"),
-        (Body::Ellipse, _) => SharedShape::new(Ellipse::new(0.5, 0.2)),
-        (Body::Heptagon, Method::Polygon) => {
-            SharedShape::new(RoundedPolygon::regular(7, 0.4, 0.06).to_parry().expect("a heptagon"))
-        }
-        (Body::Heptagon, _) => SharedShape::new(RoundedPolygon::regular(7, 0.4, 0.06)),
-    }
-}
-
-/// Shoots `body` from the origin at the wall for 30 steps; true when its centre got past the
-/// wall's mid-plane.
-fn shoot(body: Body, method: Method, s: Shot) -> bool {
-    let mut scene = Scene::new(method == Method::Smooth, Vector::ZERO);
-    scene.insert(
-        RigidBodyBuilder::fixed().translation(Vector::new(WALL_X, 0.0)),
-        ColliderBuilder::cuboid(0.025, 3.0),
-    );
-    let h = scene.insert(
-        RigidBodyBuilder::dynamic()
-            .rotation(s.angle0)
-            .linvel(Vector::new(s.speed, 0.0))
-            .angvel(s.spin)
-            .ccd_enabled(true)
-            .can_sleep(false),
-        ColliderBuilder::new(shot_shape(body, method)),
-    );
+/// Shoots `body` from the origin at the wall (`common::scenes::wall_shot`) for 30 steps; true
+/// when its centre got past the wall's mid-plane.
+fn shoot(body: ShotBody, method: ShotMethod, s: Shot) -> bool {
+    let (mut world, h) = wall_shot(method, shot_shape(body, method), s);
     for _ in 0..30 {
-        scene.step();
-        if scene.pose(h).0.x > WALL_X {
+        world.step(Vector::ZERO, &());
+        if world.bodies[h].translation().x > WALL_X {
             return true;
         }
     }
@@ -255,7 +191,7 @@ fn shots(n: usize) -> Vec<Shot> {
 }
 
 /// Tunnelled shots out of `shots`, and the seconds taken.
-fn tunnelled(body: Body, method: Method, shots: &[Shot]) -> (usize, f64) {
+fn tunnelled(body: ShotBody, method: ShotMethod, shots: &[Shot]) -> (usize, f64) {
     let t = Instant::now();
     let n = shots.iter().filter(|&&s| shoot(body, method, s)).count();
     (n, t.elapsed().as_secs_f64())
@@ -269,9 +205,9 @@ fn tunnelled(body: Body, method: Method, shots: &[Shot]) -> (usize, f64) {
 #[test]
 fn thousand_spinning_ellipse_shots_do_not_tunnel_through_a_thin_wall() {
     let shots = shots(1000);
-    let (smooth, t_smooth) = tunnelled(Body::Ellipse, Method::Smooth, &shots);
-    let (polygon, t_polygon) = tunnelled(Body::Ellipse, Method::Polygon, &shots);
-    let (parry, t_parry) = tunnelled(Body::Ellipse, Method::ParryDefault, &shots);
+    let (smooth, t_smooth) = tunnelled(ShotBody::Ellipse, ShotMethod::Smooth, &shots);
+    let (polygon, t_polygon) = tunnelled(ShotBody::Ellipse, ShotMethod::Polygon, &shots);
+    let (parry, t_parry) = tunnelled(ShotBody::Ellipse, ShotMethod::ParryDefault, &shots);
     println!(
         "ellipse shots: {} cases (60-1060 m/s, spins up to 600 rad/s, wall 0.05 thick, 30 steps each); tunnelled: \
          SmoothDispatcher {smooth} ({t_smooth:.2} s), 32-gon polygon approximation {polygon} ({t_polygon:.2} s), \
@@ -290,9 +226,9 @@ fn thousand_spinning_ellipse_shots_do_not_tunnel_through_a_thin_wall() {
 fn rounded_heptagon_shots_do_not_tunnel_through_a_thin_wall() {
     let shots = shots(300);
     let zero_spin = shots.iter().filter(|s| s.spin == 0.0).count();
-    let (smooth, t_smooth) = tunnelled(Body::Heptagon, Method::Smooth, &shots);
-    let (polygon, _) = tunnelled(Body::Heptagon, Method::Polygon, &shots);
-    let (parry, _) = tunnelled(Body::Heptagon, Method::ParryDefault, &shots);
+    let (smooth, t_smooth) = tunnelled(ShotBody::Heptagon, ShotMethod::Smooth, &shots);
+    let (polygon, _) = tunnelled(ShotBody::Heptagon, ShotMethod::Polygon, &shots);
+    let (parry, _) = tunnelled(ShotBody::Heptagon, ShotMethod::ParryDefault, &shots);
     println!(
         "rounded heptagon shots: {} cases ({zero_spin} without spin); tunnelled: SmoothDispatcher {smooth} \
          ({t_smooth:.2} s), RoundConvexPolygon under rapier's own sweeps {polygon}, parry's DefaultQueryDispatcher {parry}",
@@ -317,7 +253,7 @@ fn fast_bodies_fired_at_half_space_ground_do_not_pass_through() {
             } else {
                 SharedShape::new(RoundedPolygon::regular(5, 0.4, 0.05))
             };
-            let mut scene = Scene::new(smooth, Vector::new(0.0, G));
+            let mut scene = Scene::new(smooth, GRAVITY);
             scene.insert(
                 RigidBodyBuilder::fixed(),
                 ColliderBuilder::new(SharedShape::halfspace(Vector::Y)),
@@ -405,7 +341,7 @@ fn sensors_report_intersections_with_an_ellipse() {
     let mut scene = Scene::new(true, Vector::ZERO);
     scene.insert(
         RigidBodyBuilder::fixed().translation(Vector::new(WALL_X, 0.0)),
-        ColliderBuilder::cuboid(0.025, 3.0)
+        ColliderBuilder::cuboid(WALL_HALF, WALL_HALF_HEIGHT)
             .sensor(true)
             .active_events(ActiveEvents::COLLISION_EVENTS),
     );
@@ -435,7 +371,7 @@ fn sensors_report_intersections_with_an_ellipse() {
 }
 
 fn deterministic_scene() -> Vec<u64> {
-    let mut scene = Scene::new(true, Vector::new(0.0, G));
+    let mut scene = Scene::new(true, GRAVITY);
     ground(&mut scene);
     let mut handles = Vec::new();
     for i in 0..6 {
@@ -470,14 +406,8 @@ fn deterministic_scene() -> Vec<u64> {
     for _ in 0..400 {
         scene.step();
     }
-    let mut bits = Vec::new();
-    for h in handles {
-        let rb = &scene.world.bodies[h];
-        let (t, r) = (rb.translation(), rb.rotation());
-        bits.extend([t.x.to_bits(), t.y.to_bits(), r.re.to_bits(), r.im.to_bits()]);
-        bits.extend([rb.linvel().x.to_bits(), rb.linvel().y.to_bits(), rb.angvel().to_bits()]);
-    }
-    bits
+    let (_, words) = state_hash(&scene.world, &handles);
+    words.iter().flatten().map(|x| x.to_bits()).collect()
 }
 
 #[test]

@@ -3,6 +3,7 @@
 
 mod common;
 
+use common::rng::Rng;
 use common::*;
 use core::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI, TAU};
 use parry2d_f64::math::{Pose, Vector};
@@ -280,7 +281,7 @@ fn toi_of_discs_head_on_and_oblique_matches_closed_form() {
         // Spins about the discs' centres do not matter (but enlarge the speed bound).
         let (w1, w2) = (rng.uniform(-60.0, 60.0), rng.uniform(-60.0, 60.0));
         let base = rng.in_disc(10.0 * s);
-        let dir = rng.direction();
+        let dir = rng.direction_tau();
         let perp = Vector::new(-dir.y, dir.x);
         let m1 = moving(base, 0.2, Vector::ZERO, w1);
         let m2 = moving(base + dir * x + perp * off, 0.0, -dir * v, w2);

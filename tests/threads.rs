@@ -12,10 +12,11 @@
 //!
 //! Run with `cargo test --test threads -- --nocapture` to see the hashes.
 
+mod common;
 mod reliability;
-#[path = "common/world.rs"]
-mod world;
 
+use common::scenes::{mixed_pile, MIXED_PILE_BODIES};
+use common::world::{state_hash, World, GRAVITY};
 use parry2d_f64::math::{Pose, Real};
 use parry2d_f64::query::details::{NormalConstraints, ShapeCastOptions};
 use parry2d_f64::query::{
@@ -34,7 +35,6 @@ use std::collections::BTreeMap;
 use std::collections::HashSet;
 use std::sync::{Arc, Mutex};
 use std::thread::ThreadId;
-use world::World;
 
 /// Compile-time: everything a user shares between threads is `Send + Sync`.
 const _: () = {
@@ -123,7 +123,7 @@ fn one_dispatcher_and_shapes_shared_by_threads_answer_as_one_thread() {
     ];
     let run = |d: &SmoothDispatcher| -> Vec<u64> {
         let mut bits = Vec::new();
-        let mut rng = reliability::Rng::new(77);
+        let mut rng = reliability::Rng::mixed(77);
         for _ in 0..400 {
             let (i, j) = (rng.int(0, shapes.len() - 1), rng.int(0, shapes.len() - 1));
             let (g1, g2) = (&*shapes[i], &*shapes[j]);
@@ -286,7 +286,7 @@ struct Scene {
 }
 
 impl Scene {
-    /// [`world::mixed_pile`] with `SmoothDispatcher` (behind a spy) as the narrow phase, on
+    /// [`mixed_pile`] with `SmoothDispatcher` (behind a spy) as the narrow phase, on
     /// `threads` workers.
     fn new(threads: usize) -> Self {
         let seen = Arc::new(Mutex::new(HashSet::new()));
@@ -296,7 +296,7 @@ impl Scene {
         };
         let mut world = World::new(NarrowPhase::with_query_dispatcher(spy));
         world.pipeline.configure_thread_pool(threads).expect("thread pool");
-        let handles = world::mixed_pile(&mut world);
+        let handles = mixed_pile(&mut world);
         Scene {
             world,
             handles,
@@ -305,12 +305,12 @@ impl Scene {
     }
 
     fn step(&mut self) {
-        self.world.step(Vector::new(0.0, -9.81), &());
+        self.world.step(GRAVITY, &());
     }
 
     /// FNV-1a over the bits of every body's pose and velocities, and those numbers.
     fn state(&self) -> (u64, Vec<[f64; 7]>) {
-        world::state_hash(&self.world, &self.handles)
+        state_hash(&self.world, &self.handles)
     }
 }
 
@@ -351,7 +351,7 @@ fn rapier_parallel_pipeline_with_the_smooth_dispatcher() {
     }
     println!(
         "rapier parallel, {STEPS} steps, {} bodies, final-state hashes (1 worker: the dispatcher called from {callers1} thread):",
-        world::MIXED_PILE_BODIES + 3
+        MIXED_PILE_BODIES + 3
     );
     for (k, v) in &hashes {
         println!("  {k}: {v:016x}");

@@ -8,7 +8,6 @@ mod common;
 use common::{generate, RefOutcome, Scenario, ScenarioClass, TestShape};
 use parry2d_f64::math::Vector;
 use parry2d_f64::query::{DefaultQueryDispatcher, QueryDispatcher};
-use parry2d_f64::shape::{Ball, Shape};
 use smooth_ccd2d::{time_of_impact, SmoothDispatcher, TimeOfImpact, ToiOptions, ToiStatus};
 
 fn cases() -> usize {
@@ -21,15 +20,6 @@ fn cases() -> usize {
 fn ours(s: &Scenario) -> TimeOfImpact {
     let opts = ToiOptions::default().with_target_distance(s.target);
     time_of_impact(s.curve1(), &s.motion1, s.curve2(), &s.motion2, s.t0, s.t1, &opts).expect("valid scenario")
-}
-
-fn parry_shape(t: &TestShape) -> Box<dyn Shape> {
-    match t {
-        TestShape::Ellipse(e) => Box::new(*e),
-        TestShape::Ball(b) => Box::new(Ball::new(b.radius)),
-        TestShape::RoundedPolygon(p) => Box::new(p.clone()),
-        TestShape::CapsuleEllipse(c) => Box::new(c.clone()),
-    }
 }
 
 #[derive(Default)]
@@ -155,7 +145,7 @@ fn parry_nonlinear_cast_disagreements_are_settled_by_the_reference() {
         let (mut agree, mut parry_wrong) = (0, 0);
         for seed in 0..n as u64 {
             let s = generate(class, seed + 100_000);
-            let (g1, g2) = (parry_shape(&s.shape1), parry_shape(&s.shape2));
+            let (g1, g2) = (s.shape1.parry_shape(), s.shape2.parry_shape());
             let p = DefaultQueryDispatcher
                 .cast_shapes_nonlinear(&s.motion1, &*g1, &s.motion2, &*g2, s.t0, s.t1, true)
                 .unwrap();
@@ -202,25 +192,15 @@ fn parry_nonlinear_cast_disagreements_are_settled_by_the_reference() {
 
 #[test]
 fn appendix_d_spinning_heptagon_hits_the_ellipse_where_the_reference_says() {
-    use parry2d_f64::math::{Pose, Vector};
-    use parry2d_f64::query::NonlinearRigidMotion;
-    use smooth_ccd2d::{Ellipse, RoundedPolygon};
-    let hept = RoundedPolygon::regular(7, 1.0, 0.15);
-    let ell = Ellipse::new(0.5, 1.5);
-    let m1 = NonlinearRigidMotion::new(
-        Pose::new(Vector::new(-1.85, 0.0), 0.0),
-        Vector::ZERO,
-        Vector::new(2.0, 0.0),
-        30.0,
-    );
-    let m2 = NonlinearRigidMotion::constant_position(Pose::IDENTITY);
-    let r = time_of_impact(&hept, &m1, &ell, &m2, 0.0, 1.0, &ToiOptions::default()).unwrap();
-    let rf = common::reference_toi(&hept, &m1, &ell, &m2, 0.0, 1.0, 0.0);
+    use common::appendix_d::{ellipse, ellipse_motion, heptagon, heptagon_motion, impact, ANGVEL, WINDOW};
+    let (hept, m1, ell, m2) = (heptagon(), heptagon_motion(), ellipse(), ellipse_motion());
+    let r = impact();
+    let rf = common::reference_toi(&hept, &m1, &ell, &m2, WINDOW.0, WINDOW.1, 0.0);
     let t_ref = rf.hit_time().expect("the reference hits");
     assert_eq!(r.status, ToiStatus::Hit);
     assert!((r.time - t_ref).abs() <= 1e-9, "ours {} reference {t_ref}", r.time);
     let p1 = m1.position_at_time(r.time);
-    let turns = 30.0 * r.time / std::f64::consts::TAU;
+    let turns = ANGVEL * r.time / std::f64::consts::TAU;
     assert!(turns > 0.25 && turns < 0.75, "about half a turn: {turns}");
     println!(
         "Appendix D: t = {:.15} (reference {t_ref:.15}, {:.3} turns), contact point {:?}, normal {:?} (world), cost {:?}",
@@ -244,7 +224,7 @@ fn polygon_pairs_handed_to_parry_are_measured_against_the_reference() {
         let s = generate(ScenarioClass::EllipseRoundedPolygon, seed + 200_000);
         let TestShape::Ellipse(e) = &s.shape1 else { continue };
         let poly = RoundedPolygon::regular(5, e.half_x().max(e.half_y()), 0.1 * e.half_x().max(e.half_y()));
-        let g2 = parry_shape(&s.shape2);
+        let g2 = s.shape2.parry_shape();
         let ours = d
             .cast_shapes_nonlinear(&s.motion1, &poly, &s.motion2, &*g2, s.t0, s.t1, true)
             .unwrap();

@@ -1,13 +1,30 @@
-//! Helpers shared by the benchmarks: the scenario batches of `tests/common` as parry shapes,
-//! split by outcome, and the two casts being compared.
+//! The helper module of the benchmarks (`mod support;` in `benches/toi.rs` and
+//! `benches/ratios.rs`): the scenario batches of `tests/common` as parry shapes, split by
+//! outcome, the casts being compared, the poses of the stationary benchmarks, the rounded
+//! polygon – disc scenarios of the sweep benchmarks, timing, parry's polygonal stand-ins, and the
+//! pile ([`pile`]). The files of `tests/common` it needs are included as they are (`#[path]`):
+//! the reference, the RNG, the scenario generator, the rapier world and its scenes.
 #![allow(dead_code)]
 
-use crate::common::{generate, Scenario, ScenarioClass, TestShape};
-use parry2d_f64::query::{DefaultQueryDispatcher, QueryDispatcher, ShapeCastHit};
-use parry2d_f64::shape::{Ball, Shape};
-use smooth_ccd2d::SmoothDispatcher;
+#[path = "../../tests/common/reference.rs"]
+pub mod reference;
+#[path = "../../tests/common/rng.rs"]
+pub mod rng;
+#[path = "../../tests/common/scenarios.rs"]
+pub mod scenarios;
+#[path = "../../tests/common/scenes.rs"]
+pub mod scenes;
+#[path = "../../tests/common/world.rs"]
+pub mod world;
 
 pub mod pile;
+
+use parry2d_f64::math::Pose;
+use parry2d_f64::query::{DefaultQueryDispatcher, NonlinearRigidMotion, QueryDispatcher, ShapeCastHit, Sweep};
+use parry2d_f64::shape::{Ball, RoundConvexPolygon, Shape};
+use reference::{RefOutcome, RefToi};
+use scenarios::{generate, Scenario, ScenarioClass, TestShape};
+use smooth_ccd2d::{BallCurve, RoundedPolygon, SmoothDispatcher};
 
 /// Scenarios per class in a batch.
 pub const BATCH: usize = 200;
@@ -22,27 +39,18 @@ pub struct Case {
     pub g2: Box<dyn Shape>,
 }
 
-/// A test shape as a parry shape.
-pub fn parry_shape(t: &TestShape) -> Box<dyn Shape> {
-    match t {
-        TestShape::Ellipse(e) => Box::new(*e),
-        TestShape::Ball(b) => Box::new(Ball::new(b.radius)),
-        TestShape::RoundedPolygon(p) => Box::new(p.clone()),
-        TestShape::CapsuleEllipse(c) => Box::new(c.clone()),
-    }
-}
-
 impl Case {
     /// The scenario of `class` for `seed`.
     pub fn new(class: ScenarioClass, seed: u64) -> Self {
         let s = generate(class, seed);
-        let (g1, g2) = (parry_shape(&s.shape1), parry_shape(&s.shape2));
+        let (g1, g2) = (s.shape1.parry_shape(), s.shape2.parry_shape());
         Self { s, g1, g2 }
     }
 
-    /// This crate's nonlinear cast (`stop_at_penetration = true`, target distance 0 as parry's).
+    /// The nonlinear cast of dispatcher `d` over the scenario's window
+    /// (`stop_at_penetration = true`, target distance 0 as parry's).
     #[inline]
-    pub fn ours(&self, d: &SmoothDispatcher) -> Option<ShapeCastHit> {
+    pub fn cast(&self, d: &impl QueryDispatcher) -> Option<ShapeCastHit> {
         d.cast_shapes_nonlinear(
             &self.s.motion1,
             &*self.g1,
@@ -56,21 +64,46 @@ impl Case {
         .flatten()
     }
 
+    /// This crate's nonlinear cast.
+    #[inline]
+    pub fn ours(&self, d: &SmoothDispatcher) -> Option<ShapeCastHit> {
+        self.cast(d)
+    }
+
     /// parry's nonlinear cast on the same shapes.
     #[inline]
     pub fn parry(&self) -> Option<ShapeCastHit> {
-        DefaultQueryDispatcher
-            .cast_shapes_nonlinear(
-                &self.s.motion1,
-                &*self.g1,
-                &self.s.motion2,
-                &*self.g2,
-                self.s.t0,
-                self.s.t1,
-                true,
-            )
-            .ok()
-            .flatten()
+        self.cast(&DefaultQueryDispatcher)
+    }
+
+    /// Shape 2's pose in shape 1's frame at the window start.
+    pub fn start_pose(&self) -> Pose {
+        self.s.motion1.position_at_time(self.s.t0).inverse() * self.s.motion2.position_at_time(self.s.t0)
+    }
+
+    /// The pose at the window start with the centres brought closer until this crate's signed
+    /// distance is `depth` (negative: penetrating), by bisection on the translation's scale.
+    pub fn pose_at_depth(&self, depth: f64, d: &SmoothDispatcher) -> Option<Pose> {
+        let p0 = self.start_pose();
+        let at = |k: f64| {
+            let mut p = p0;
+            p.translation *= k;
+            p
+        };
+        let dist = |k: f64| -> Option<f64> { Some(d.signed_distance(&at(k), &*self.g1, &*self.g2)?.ok()?.distance) };
+        let (mut lo, mut hi) = (0.0, 1.0);
+        if !(dist(hi)? > depth && dist(lo)? < depth) {
+            return None;
+        }
+        for _ in 0..60 {
+            let mid = 0.5 * (lo + hi);
+            if dist(mid)? > depth {
+                hi = mid;
+            } else {
+                lo = mid;
+            }
+        }
+        Some(at(hi))
     }
 }
 
@@ -87,8 +120,7 @@ pub fn split_batch(class: ScenarioClass) -> (Vec<Case>, Vec<Case>) {
 /// sign change, or a miss whose smallest gap is within `1e-9` of the size) either answer is
 /// right. At a crossing the answer must be a hit within `1e-6` of the window plus the time
 /// `1e-9·size / |dD/dt|` (ill-conditioned near-grazing crossings).
-pub fn judge(answer: Option<f64>, rf: &crate::common::RefToi, size: f64, window: f64) -> Option<bool> {
-    use crate::common::RefOutcome;
+pub fn judge(answer: Option<f64>, rf: &RefToi, size: f64, window: f64) -> Option<bool> {
     match rf.outcome {
         RefOutcome::Capped { .. } => None,
         RefOutcome::Hit { crossed: false, .. } => Some(true),
@@ -98,6 +130,56 @@ pub fn judge(answer: Option<f64>, rf: &crate::common::RefToi, size: f64, window:
             None => false,
         }),
     }
+}
+
+/// A `rounded_polygon-ellipse` scenario with the ellipse replaced by the disc of the same area,
+/// for parry's `sweep_time_of_impact` (which takes rounded polygons and balls, not ellipses).
+pub struct PolygonDisc {
+    /// The scenario, shape 2 the disc, target 0.
+    pub s: Scenario,
+    /// Shape 1.
+    pub poly: RoundedPolygon,
+    /// Shape 1 as parry's rounded polygon.
+    pub parry_poly: RoundConvexPolygon,
+    /// The disc's radius.
+    pub radius: f64,
+}
+
+impl PolygonDisc {
+    /// The scenario of `seed`; `keep_spin`: keep the spins, but only where they turn the bodies by
+    /// at most 45° over the window (rapier's regime; `None` otherwise), else set them to 0 (where
+    /// parry's sweep follows the same path).
+    pub fn new(seed: u64, keep_spin: bool) -> Option<Self> {
+        let mut s = generate(ScenarioClass::RoundedPolygonEllipse, seed);
+        let (TestShape::RoundedPolygon(poly), TestShape::Ellipse(e)) = (&s.shape1, &s.shape2) else {
+            return None;
+        };
+        let poly: RoundedPolygon = poly.clone();
+        let radius = (e.half_x() * e.half_y()).sqrt();
+        if keep_spin {
+            let turn = (s.motion1.angvel.abs() + s.motion2.angvel.abs()) * (s.t1 - s.t0);
+            if turn > core::f64::consts::FRAC_PI_4 {
+                return None;
+            }
+        } else {
+            s.motion1.angvel = 0.0;
+            s.motion2.angvel = 0.0;
+        }
+        s.shape2 = TestShape::Ball(BallCurve { radius });
+        s.target = 0.0;
+        let parry_poly = poly.to_parry()?;
+        Some(Self {
+            s,
+            poly,
+            parry_poly,
+            radius,
+        })
+    }
+}
+
+/// parry's `Sweep` of `m` over [t0, t1]: its poses at both ends (parry interpolates between them).
+pub fn sweep_of(m: &NonlinearRigidMotion, t0: f64, t1: f64) -> Sweep {
+    Sweep::from_poses(&m.position_at_time(t0), &m.position_at_time(t1), m.local_center)
 }
 
 /// Timing helpers shared by the table-printing benchmark: every measurement repeats the query
@@ -157,6 +239,19 @@ pub mod timing {
             }
         }
         (ta, tb)
+    }
+
+    /// Per-call seconds of `ours` and `parry` by [`time_pair`], their answers kept from the
+    /// optimiser.
+    pub fn time_contenders<A, B>(mut ours: impl FnMut() -> A, mut parry: impl FnMut() -> B) -> (f64, f64) {
+        time_pair(
+            &mut || {
+                std::hint::black_box(ours());
+            },
+            &mut || {
+                std::hint::black_box(parry());
+            },
+        )
     }
 
     /// The q-quantile (nearest rank) of `v`; NaN for an empty slice.

@@ -1,82 +1,41 @@
-//! Shared by the examples (`#[path = "common/mod.rs"] mod common;`): a small rapier scene, the
-//! output folder, shape outlines and a hand-written SVG writer.
+//! The helper module of the examples (`#[path = "common/mod.rs"] mod common;`; `tests/figures.rs`
+//! reaches it through `examples/figures.rs`): the output folder, shape outlines, a hand-written
+//! SVG writer, and the files of `tests/common` the examples share with the tests, included as
+//! they are (`#[path]`): the rapier world ([`world`]) and its scenes ([`scenes`], with the RNG
+//! [`rng`]), the Appendix D scene ([`appendix_d`]), and the scenario generator ([`scenarios`],
+//! with its [`reference`]) that `examples/toi_timing.rs` times.
 #![allow(dead_code)]
+
+#[path = "../../tests/common/appendix_d.rs"]
+pub mod appendix_d;
+#[path = "../../tests/common/reference.rs"]
+pub mod reference;
+#[path = "../../tests/common/rng.rs"]
+pub mod rng;
+#[path = "../../tests/common/scenarios.rs"]
+pub mod scenarios;
+#[path = "../../tests/common/scenes.rs"]
+pub mod scenes;
+#[path = "../../tests/common/world.rs"]
+pub mod world;
 
 use rapier2d_f64::prelude::*;
 use std::fmt::Write as _;
 use std::path::PathBuf;
+use world::World;
 
-/// A rapier scene driven by `PhysicsPipeline::step` (the harness of `tests/rapier_integration.rs`).
-pub struct Scene {
-    pub gravity: Vector,
-    pub params: IntegrationParameters,
-    pub pipeline: PhysicsPipeline,
-    pub islands: IslandManager,
-    pub broad_phase: DefaultBroadPhase,
-    pub narrow_phase: NarrowPhase,
-    pub bodies: RigidBodySet,
-    pub colliders: ColliderSet,
-    pub impulse_joints: ImpulseJointSet,
-    pub multibody_joints: MultibodyJointSet,
-    pub soft_bodies: SoftBodySet,
-    pub ccd: CCDSolver,
-}
-
-impl Scene {
-    pub fn new(narrow_phase: NarrowPhase, gravity: Vector) -> Self {
-        Scene {
-            gravity,
-            params: IntegrationParameters::default(),
-            pipeline: PhysicsPipeline::new(),
-            islands: IslandManager::new(),
-            broad_phase: DefaultBroadPhase::new(),
-            narrow_phase,
-            bodies: RigidBodySet::new(),
-            colliders: ColliderSet::new(),
-            impulse_joints: ImpulseJointSet::new(),
-            multibody_joints: MultibodyJointSet::new(),
-            soft_bodies: SoftBodySet::new(),
-            ccd: CCDSolver::new(),
-        }
-    }
-
-    pub fn insert(&mut self, body: RigidBodyBuilder, collider: ColliderBuilder) -> (RigidBodyHandle, ColliderHandle) {
-        let h = self.bodies.insert(body);
-        let c = self.colliders.insert_with_parent(collider, h, &mut self.bodies);
-        (h, c)
-    }
-
-    pub fn step(&mut self) {
-        self.pipeline.step(
-            self.gravity,
-            &self.params,
-            &mut self.islands,
-            &mut self.broad_phase,
-            &mut self.narrow_phase,
-            &mut self.bodies,
-            &mut self.colliders,
-            &mut self.impulse_joints,
-            &mut self.multibody_joints,
-            &mut self.soft_bodies,
-            &mut self.ccd,
-            &(),
-            &(),
-        );
-    }
-
-    /// The most negative contact distance over all contact manifolds of the narrow phase (0 when
-    /// there is no penetrating contact point).
-    pub fn worst_penetration(&self) -> f64 {
-        let mut worst: f64 = 0.0;
-        for pair in self.narrow_phase.contact_pairs() {
-            for m in pair.manifolds() {
-                for p in &m.points {
-                    worst = worst.min(p.dist);
-                }
+/// The most negative contact distance over all contact manifolds of the world's narrow phase (0
+/// when there is no penetrating contact point).
+pub fn worst_penetration(world: &World) -> f64 {
+    let mut worst: f64 = 0.0;
+    for pair in world.narrow_phase.contact_pairs() {
+        for m in pair.manifolds() {
+            for p in &m.points {
+                worst = worst.min(p.dist);
             }
         }
-        worst
     }
+    worst
 }
 
 /// The output folder: the first command-line argument, or `target/examples-out` under the crate's

@@ -1,10 +1,22 @@
-//! Shared helpers of the integration tests: an independent exact reference for the signed
-//! distance and the time of impact ([`reference`]), deterministic random scenario generators
-//! ([`scenarios`]), and a rapier world to step ([`world`]).
+//! The helper module of the tests (`mod common;`), shared by the benches (through
+//! `benches/support`) and the examples (through `examples/common`, file by file):
+//!
+//! * [`rng`]: the one splitmix64 generator (and the pile's LCG) of every random batch;
+//! * [`reference`]: an independent exact reference for the signed distance and the time of impact;
+//! * [`scenarios`]: deterministic random time-of-impact scenarios, and `par_map`;
+//! * [`world`]: a rapier world to step, and a hash of its state;
+//! * [`scenes`]: the rapier scenes (the mixed pile, the box pile, the wall shots);
+//! * [`appendix_d`]: the specification's Appendix D scene.
+//!
+//! `tests/reliability` (the fuzz generator of `tests/adversarial.rs`, `tests/golden.rs` and
+//! `tests/threads.rs`) draws from [`rng`] too.
 #![allow(dead_code)]
 
+pub mod appendix_d;
 pub mod reference;
+pub mod rng;
 pub mod scenarios;
+pub mod scenes;
 pub mod world;
 
 #[allow(unused_imports)]

@@ -470,112 +470,189 @@ pub fn reference_toi_with(
     target: f64,
     opts: &RefToiOptions,
 ) -> RefToi {
-    let mut pair = Pair {
-        s1: shape1,
-        m1: *motion1,
-        s2: shape2,
-        m2: *motion2,
-        evals: 0,
-    };
     let v = speed_bound(shape1, motion1, shape2, motion2);
-    let v_rel = motion2.linvel - motion1.linvel;
-    let w_rot = motion1.angvel.abs() * (shape1.bounding_radius() + motion1.local_center.length())
-        + motion2.angvel.abs() * (shape2.bounding_radius() + motion2.local_center.length());
     let tol = opts.tol_rel * pair_size(shape1, shape2);
-    let window = (t1 - t0).max(f64::MIN_POSITIVE);
-    let mut res = RefToi {
-        outcome: RefOutcome::Miss,
-        start_gap: 0.0,
-        initially_within_target: false,
-        min_gap: f64::INFINITY,
-        slope: 0.0,
-        steps: 0,
-        evals: 0,
-        speed_bound: v,
+    let mut search = Search {
+        pair: Pair {
+            s1: shape1,
+            m1: *motion1,
+            s2: shape2,
+            m2: *motion2,
+            evals: 0,
+        },
+        opts: *opts,
+        t0,
+        t1,
+        target,
         tol,
+        window: (t1 - t0).max(f64::MIN_POSITIVE),
+        v,
+        v_rel: motion2.linvel - motion1.linvel,
+        w_rot: motion1.angvel.abs() * (shape1.bounding_radius() + motion1.local_center.length())
+            + motion2.angvel.abs() * (shape2.bounding_radius() + motion2.local_center.length()),
+        res: RefToi {
+            outcome: RefOutcome::Miss,
+            start_gap: 0.0,
+            initially_within_target: false,
+            min_gap: f64::INFINITY,
+            slope: 0.0,
+            steps: 0,
+            evals: 0,
+            speed_bound: v,
+            tol,
+        },
     };
+    search.run();
+    search.res.evals = search.pair.evals;
+    search.res
+}
 
-    let (theta0, d0) = pair.full(t0);
-    let mut theta = wrap_pm(theta0);
-    let mut t = t0;
-    let mut gap = d0 - target;
-    res.start_gap = gap;
-    res.min_gap = gap;
-    if gap <= 0.0 {
-        res.initially_within_target = true;
-        res.outcome = RefOutcome::Hit {
-            time: t0,
-            crossed: false,
-        };
-        res.evals = pair.evals;
-        return res;
-    }
-    // Previous sample (time, gap), for the slope estimate of the probes.
-    let mut prev: Option<(f64, f64)> = None;
-    let mut dtheta = 1e-3_f64;
-    loop {
-        if gap < tol {
-            break; // Within tol of the target: refine below.
+/// Where the conservative advancement stopped: at `t`, the precise gap `gap` = D − target < tol
+/// along the direction at angle `theta`; `prev` is the sample before (time, gap).
+struct Advanced {
+    t: f64,
+    theta: f64,
+    gap: f64,
+    prev: Option<(f64, f64)>,
+}
+
+/// The state of [`reference_toi_with`]: the pair, the window, the rate bounds and the answer so far.
+struct Search<'a> {
+    pair: Pair<'a>,
+    opts: RefToiOptions,
+    t0: f64,
+    t1: f64,
+    target: f64,
+    tol: f64,
+    /// t1 − t0 (at least the smallest positive number).
+    window: f64,
+    /// The Lipschitz bound V.
+    v: f64,
+    /// v₂ − v₁.
+    v_rel: Vector,
+    /// |ω₁|·r₁ + |ω₂|·r₂.
+    w_rot: f64,
+    res: RefToi,
+}
+
+impl Search<'_> {
+    /// The search: the start, the advancement, the bracket of the crossing, its bisection and the
+    /// slope there; the outcome and statistics in `self.res` (but for `evals`).
+    fn run(&mut self) {
+        let (t0, target) = (self.t0, self.target);
+        let (theta0, d0) = self.pair.full(t0);
+        let gap = d0 - target;
+        self.res.start_gap = gap;
+        self.res.min_gap = gap;
+        if gap <= 0.0 {
+            self.res.initially_within_target = true;
+            self.res.outcome = RefOutcome::Hit {
+                time: t0,
+                crossed: false,
+            };
+            return;
         }
-        // The gap sample is g(n, t) along n = (cos θ, sin θ); d/dt g(n, ·) ≥ −rate.
-        let rate = if opts.directional {
-            let n = Vector::new(theta.cos(), theta.sin());
-            (-v_rel.dot(n)).max(0.0) + w_rot
-        } else {
-            v
+        let adv = match self.advance(wrap_pm(theta0), gap) {
+            Ok(adv) => adv,
+            Err(outcome) => {
+                self.res.outcome = outcome;
+                return;
+            }
         };
-        if rate <= 0.0 {
-            // The gap along n can never decrease: no contact ever.
-            res.outcome = RefOutcome::Miss;
-            res.evals = pair.evals;
-            return res;
-        }
-        let h = gap / rate;
-        if t + h > t1 {
-            res.outcome = RefOutcome::Miss;
-            res.evals = pair.evals;
-            return res;
-        }
-        if res.steps >= opts.max_steps {
-            res.outcome = RefOutcome::Capped { reached: t };
-            res.evals = pair.evals;
-            return res;
-        }
-        prev = Some((t, gap));
-        t += h;
-        res.steps += 1;
-        let w = (2.0 * dtheta.abs()).max(1e-9);
-        let (th, d) = if res.steps.is_multiple_of(opts.resample_every) {
-            pair.full(t)
-        } else {
-            pair.lower(t, theta, w, target, opts.lower_bound_slack)
+        // Refinement. `gap` (precise) < tol at time t, and [t0, t) holds no contact.
+        let (lo, glo, hi) = self.bracket(&adv);
+        self.res.min_gap = self.res.min_gap.min(glo);
+        let time = match hi {
+            Some(hi) => {
+                let lo = self.bisect(lo, hi, adv.theta);
+                self.res.outcome = RefOutcome::Hit {
+                    time: lo,
+                    crossed: true,
+                };
+                lo
+            }
+            None => {
+                self.res.outcome = RefOutcome::Hit {
+                    time: lo,
+                    crossed: false,
+                };
+                lo
+            }
         };
-        let (th, d) = if d - target < tol {
-            pair.precise(t, th, 1e-6)
-        } else {
-            (th, d)
-        };
-        // Angles stay in [−π, π) so that ANGLE_TOL stays a few ulps.
-        dtheta = wrap_pm(th - theta);
-        theta = wrap_pm(th);
-        gap = d - target;
-        res.min_gap = res.min_gap.min(gap);
+        self.slope_at(time, adv.theta);
     }
 
-    // Refinement. `gap` (precise) < tol at time t, and [t0, t) holds no contact.
-    let (mut lo, mut glo) = (t, gap);
-    let mut hi = None;
-    if gap <= 0.0 {
-        // Round-off put the sample at or below the target: the crossing is after `prev`.
-        let (tp, gp) = prev.unwrap_or((t0, res.start_gap));
-        (lo, glo) = (tp, gp);
-        hi = Some(t);
-    } else {
+    /// Conservative advancement from t0 (gap `gap` along the direction at `theta`) until the
+    /// precise gap is within tol of the target; `Err` with the outcome when it passes t1 or can
+    /// never close (a miss) or reaches the step cap.
+    fn advance(&mut self, mut theta: f64, mut gap: f64) -> Result<Advanced, RefOutcome> {
+        let (opts, target, tol) = (self.opts, self.target, self.tol);
+        let mut t = self.t0;
+        // Previous sample (time, gap), for the slope estimate of the probes.
+        let mut prev: Option<(f64, f64)> = None;
+        let mut dtheta = 1e-3_f64;
+        loop {
+            if gap < tol {
+                // Within tol of the target: refine.
+                return Ok(Advanced { t, theta, gap, prev });
+            }
+            // The gap sample is g(n, t) along n = (cos θ, sin θ); d/dt g(n, ·) ≥ −rate.
+            let rate = if opts.directional {
+                let n = Vector::new(theta.cos(), theta.sin());
+                (-self.v_rel.dot(n)).max(0.0) + self.w_rot
+            } else {
+                self.v
+            };
+            if rate <= 0.0 {
+                // The gap along n can never decrease: no contact ever.
+                return Err(RefOutcome::Miss);
+            }
+            let h = gap / rate;
+            if t + h > self.t1 {
+                return Err(RefOutcome::Miss);
+            }
+            if self.res.steps >= opts.max_steps {
+                return Err(RefOutcome::Capped { reached: t });
+            }
+            prev = Some((t, gap));
+            t += h;
+            self.res.steps += 1;
+            let w = (2.0 * dtheta.abs()).max(1e-9);
+            let (th, d) = if self.res.steps.is_multiple_of(opts.resample_every) {
+                self.pair.full(t)
+            } else {
+                self.pair.lower(t, theta, w, target, opts.lower_bound_slack)
+            };
+            let (th, d) = if d - target < tol {
+                self.pair.precise(t, th, 1e-6)
+            } else {
+                (th, d)
+            };
+            // Angles stay in [−π, π) so that ANGLE_TOL stays a few ulps.
+            dtheta = wrap_pm(th - theta);
+            theta = wrap_pm(th);
+            gap = d - target;
+            self.res.min_gap = self.res.min_gap.min(gap);
+        }
+    }
+
+    /// After the advancement: (lo, D(lo) − target, hi) with a crossing in (lo, hi] when `hi` is
+    /// some, else lo is the time of the smallest gap seen (a graze). Probes forward from the last
+    /// sample with slope-based steps until the gap crosses the target or clearly rises.
+    fn bracket(&mut self, adv: &Advanced) -> (f64, f64, Option<f64>) {
+        let Advanced { t, theta, gap, prev } = *adv;
+        if gap <= 0.0 {
+            // Round-off put the sample at or below the target: the crossing is after `prev`.
+            let (tp, gp) = prev.unwrap_or((self.t0, self.res.start_gap));
+            return (tp, gp, Some(t));
+        }
+        let (mut lo, mut glo) = (t, gap);
         // Round-off level of D: a few ulps of the coordinates involved.
-        let (q1, q2) = (motion1.position_at_time(t), motion2.position_at_time(t));
-        let scale = pair_size(shape1, shape2) + q1.translation.length().max(q2.translation.length());
+        let (q1, q2) = (self.pair.m1.position_at_time(t), self.pair.m2.position_at_time(t));
+        let scale = pair_size(self.pair.s1, self.pair.s2) + q1.translation.length().max(q2.translation.length());
         let noise = 8.0 * f64::EPSILON * scale;
-        let floor = 1e-15 * (t.abs() + window);
+        let floor = 1e-15 * (t.abs() + self.window);
+        let window = self.window;
         // Next probe step from a descending slope: twice the linear root, and long enough for
         // the slope to show above the noise.
         let step_for = |g: f64, slope: f64| {
@@ -590,15 +667,13 @@ pub fn reference_toi_with(
         let (mut cur_t, mut cur_g) = (t, gap);
         let mut shrinks = 0;
         for _ in 0..400 {
-            let tp = (cur_t + h).min(t1);
+            let tp = (cur_t + h).min(self.t1);
             if tp <= cur_t {
                 break;
             }
-            let gp = pair.precise_distance(tp, theta) - target;
+            let gp = self.pair.precise_distance(tp, theta) - self.target;
             if gp <= 0.0 {
-                (lo, glo) = (cur_t, cur_g);
-                hi = Some(tp);
-                break;
+                return (cur_t, cur_g, Some(tp));
             }
             if gp > cur_g + noise {
                 // Clearly rising: the gap bottomed out within tol without crossing (a graze),
@@ -625,49 +700,42 @@ pub fn reference_toi_with(
             if cur_g < glo {
                 (lo, glo) = (cur_t, cur_g);
             }
-            if tp >= t1 {
+            if tp >= self.t1 {
                 break;
             }
         }
+        (lo, glo, None)
     }
-    res.min_gap = res.min_gap.min(glo);
 
-    let time = match hi {
-        Some(mut hi) => {
-            // Bisection: D(lo) > target ≥ D(hi).
-            for _ in 0..200 {
-                let mid = 0.5 * (lo + hi);
-                if mid <= lo || mid >= hi {
-                    break;
-                }
-                let g = pair.precise_distance(mid, theta) - target;
-                if g <= 0.0 {
-                    hi = mid;
-                } else {
-                    lo = mid;
-                }
+    /// Bisection of a crossing: D(lo) > target ≥ D(hi); returns the last lo (~1e-16 of the time
+    /// scale below the crossing).
+    fn bisect(&mut self, mut lo: f64, mut hi: f64, theta: f64) -> f64 {
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if mid <= lo || mid >= hi {
+                break;
             }
-            res.outcome = RefOutcome::Hit {
-                time: lo,
-                crossed: true,
-            };
-            lo
+            let g = self.pair.precise_distance(mid, theta) - self.target;
+            if g <= 0.0 {
+                hi = mid;
+            } else {
+                lo = mid;
+            }
         }
-        None => {
-            res.outcome = RefOutcome::Hit {
-                time: lo,
-                crossed: false,
-            };
-            lo
-        }
-    };
-    // Slope of D near the hit, for conditioning.
-    let dh = 1e-7 * window;
-    let (ta, tb) = ((time - dh).max(t0), (time + dh).min(t1));
-    if tb > ta {
-        let (da, db) = (pair.precise_distance(ta, theta), pair.precise_distance(tb, theta));
-        res.slope = (db - da) / (tb - ta);
+        lo
     }
-    res.evals = pair.evals;
-    res
+
+    /// The slope of D near the hit at `time` (for conditioning): a central difference at ±1e-7 of
+    /// the window, clipped to it.
+    fn slope_at(&mut self, time: f64, theta: f64) {
+        let dh = 1e-7 * self.window;
+        let (ta, tb) = ((time - dh).max(self.t0), (time + dh).min(self.t1));
+        if tb > ta {
+            let (da, db) = (
+                self.pair.precise_distance(ta, theta),
+                self.pair.precise_distance(tb, theta),
+            );
+            self.res.slope = (db - da) / (tb - ta);
+        }
+    }
 }

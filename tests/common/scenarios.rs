@@ -1,6 +1,7 @@
 //! Deterministic random scenarios for time-of-impact tests: two convex shapes, two
-//! `NonlinearRigidMotion`s, a window and a target distance, generated from a `u64` seed with a
-//! small PRNG (splitmix64).
+//! `NonlinearRigidMotion`s, a window and a target distance, generated from a `u64` seed with the
+//! splitmix64 generator of `rng.rs`. Used by the tests of `tests/` through `mod common`, the
+//! benches through `benches/support` and `examples/toi_timing.rs` through `examples/common`.
 //!
 //! Every scenario is built around a configuration at a chosen time t_c: both shapes placed with
 //! a chosen gap along a chosen normal (their support points aligned along it, so the distance is
@@ -12,66 +13,12 @@
 //! scale with them, spins do not, the window is always [0, 1].
 
 use super::reference::{reference_distance_at, reference_toi, world_support, RefToi};
+use super::rng::Rng;
 use core::f64::consts::{PI, TAU};
 use parry2d_f64::math::{Pose, Vector};
 use parry2d_f64::query::NonlinearRigidMotion;
+use parry2d_f64::shape::{Ball, Shape};
 use smooth_ccd2d::{BallCurve, CapsuleEllipse, ConvexCurve, Ellipse, RoundedPolygon};
-
-/// splitmix64: a tiny, good-enough deterministic PRNG.
-#[derive(Clone, Debug)]
-pub struct Rng(u64);
-
-impl Rng {
-    /// A generator from a seed.
-    pub fn new(seed: u64) -> Self {
-        Self(seed)
-    }
-    /// The next 64 random bits.
-    pub fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    /// Uniform in [0, 1).
-    pub fn unit(&mut self) -> f64 {
-        (self.next_u64() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
-    }
-    /// Uniform in [lo, hi).
-    pub fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.unit()
-    }
-    /// Log-uniform in [lo, hi) (both > 0).
-    pub fn log_uniform(&mut self, lo: f64, hi: f64) -> f64 {
-        (self.uniform(lo.ln(), hi.ln())).exp()
-    }
-    /// True with probability `p`.
-    pub fn chance(&mut self, p: f64) -> bool {
-        self.unit() < p
-    }
-    /// Uniform integer in [lo, hi] (inclusive).
-    pub fn int(&mut self, lo: usize, hi: usize) -> usize {
-        lo + (self.next_u64() % (hi - lo + 1) as u64) as usize
-    }
-    /// ±1 with equal probability.
-    pub fn sign(&mut self) -> f64 {
-        if self.chance(0.5) {
-            1.0
-        } else {
-            -1.0
-        }
-    }
-    /// A uniformly random unit vector.
-    pub fn direction(&mut self) -> Vector {
-        let a = self.uniform(0.0, TAU);
-        Vector::new(a.cos(), a.sin())
-    }
-    /// A uniformly random point in the disc of radius `r`.
-    pub fn in_disc(&mut self, r: f64) -> Vector {
-        self.direction() * (r * self.unit().sqrt())
-    }
-}
 
 /// A shape of a scenario, concrete so that tests can wrap it in whatever parry shape they need.
 #[derive(Clone, Debug)]
@@ -94,6 +41,15 @@ impl TestShape {
             TestShape::Ball(s) => s,
             TestShape::RoundedPolygon(s) => s,
             TestShape::CapsuleEllipse(s) => s,
+        }
+    }
+    /// The shape as a parry shape (a disc as parry's `Ball`).
+    pub fn parry_shape(&self) -> Box<dyn Shape> {
+        match self {
+            TestShape::Ellipse(e) => Box::new(*e),
+            TestShape::Ball(b) => Box::new(Ball::new(b.radius)),
+            TestShape::RoundedPolygon(p) => Box::new(p.clone()),
+            TestShape::CapsuleEllipse(c) => Box::new(c.clone()),
         }
     }
     /// A short description (type and parameters).
@@ -234,15 +190,7 @@ impl Scenario {
     }
     /// The reference time of impact (default options).
     pub fn reference(&self) -> RefToi {
-        reference_toi(
-            self.curve1(),
-            &self.motion1,
-            self.curve2(),
-            &self.motion2,
-            self.t0,
-            self.t1,
-            self.target,
-        )
+        self.reference_with_target(self.target)
     }
     /// The reference time of impact for another target distance (e.g. `target + margin`, to
     /// tell a clear miss from one that comes within `margin` of the target).
@@ -391,6 +339,214 @@ fn perp(v: Vector) -> Vector {
     Vector::new(-v.y, v.x)
 }
 
+/// The target distance: 0 (45 %), a few 1e-6 of the size (40 %), or 0.1–5 % of it.
+fn draw_target(rng: &mut Rng, size: f64) -> f64 {
+    let u = rng.unit();
+    if u < 0.45 {
+        0.0
+    } else if u < 0.85 {
+        size * rng.uniform(1e-6, 4e-6)
+    } else {
+        size * rng.uniform(1e-3, 0.05)
+    }
+}
+
+/// A spin of 20–60 rad/s either way.
+fn fast_spin(rng: &mut Rng) -> f64 {
+    rng.sign() * rng.uniform(20.0, 60.0)
+}
+
+/// `fast` on body 1 or body 2 (even odds), `other` on the other body.
+fn either_body(rng: &mut Rng, fast: f64, other: f64) -> (f64, f64) {
+    if rng.chance(0.5) {
+        (fast, other)
+    } else {
+        (other, fast)
+    }
+}
+
+/// The spins (ω1, ω2) of `kind`.
+fn draw_spins(rng: &mut Rng, kind: ScenarioKind) -> (f64, f64) {
+    match kind {
+        ScenarioKind::Ordinary => (rng.uniform(-3.0, 3.0), rng.uniform(-3.0, 3.0)),
+        ScenarioKind::FastSpin => {
+            let fast = fast_spin(rng);
+            let other = if rng.chance(0.3) {
+                fast_spin(rng)
+            } else {
+                rng.uniform(-5.0, 5.0)
+            };
+            either_body(rng, fast, other)
+        }
+        ScenarioKind::MultiTurn => {
+            let fast = rng.sign() * rng.uniform(30.0, 60.0);
+            let other = rng.uniform(-3.0, 3.0);
+            either_body(rng, fast, other)
+        }
+        ScenarioKind::Grazing => {
+            let u = rng.unit();
+            if u < 0.5 {
+                (0.0, 0.0)
+            } else if u < 0.8 {
+                (rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0))
+            } else if rng.chance(0.5) {
+                (fast_spin(rng), rng.uniform(-2.0, 2.0))
+            } else {
+                (rng.uniform(-2.0, 2.0), fast_spin(rng))
+            }
+        }
+        ScenarioKind::PassBy => (rng.uniform(-10.0, 10.0), rng.uniform(-10.0, 10.0)),
+    }
+}
+
+/// A rotation centre in the body's frame: its origin, or (three times in ten) a point within half
+/// its bounding radius `br`.
+fn draw_centre(rng: &mut Rng, br: f64) -> Vector {
+    if rng.chance(0.3) {
+        rng.in_disc(0.5 * br)
+    } else {
+        Vector::ZERO
+    }
+}
+
+/// The configuration of a scenario at its time t_c, relative to the normal n from object 1 to
+/// object 2: the gap along n and the relative velocity v₂ − v₁ = −un·n + ut·n⊥.
+struct Approach {
+    /// The configuration time t_c.
+    tc: f64,
+    /// The gap along n at t_c minus the target (< 0: aimed to hit).
+    gap: f64,
+    /// The relative velocity's normal part (> 0: approaching).
+    un: f64,
+    /// The relative velocity's tangential part.
+    ut: f64,
+    /// Replace `un` by the normal speed that cancels the spins' effect on the gap along n at t_c:
+    /// the distance then has a critical point there.
+    cancel_rotation: bool,
+}
+
+impl Approach {
+    /// The approach at `tc` with gap `gap` and relative velocity (`un`, `ut`) as drawn.
+    fn new(tc: f64, gap: f64, un: f64, ut: f64) -> Self {
+        Approach {
+            tc,
+            gap,
+            un,
+            ut,
+            cancel_rotation: false,
+        }
+    }
+}
+
+/// An approach aimed to hit at t_c uniform in `tc`: normal speed `reach·U(speed)/t_c`, overlap
+/// `size·U(0, depth)` at t_c, tangential speed up to `spread` times the normal one.
+fn aimed(rng: &mut Rng, tc: (f64, f64), speed: (f64, f64), depth: f64, spread: f64, reach: f64, size: f64) -> Approach {
+    let tc = rng.uniform(tc.0, tc.1);
+    let un = reach * rng.uniform(speed.0, speed.1) / tc;
+    let gap = -size * rng.uniform(0.0, depth);
+    Approach::new(tc, gap, un, un * rng.uniform(-spread, spread))
+}
+
+/// A clear pass-by at 2–50 % of the size, mostly tangential.
+fn pass_by(rng: &mut Rng, reach: f64, size: f64) -> Approach {
+    let ut = reach * rng.uniform(1.0, 4.0) * rng.sign();
+    let tc = rng.uniform(0.1, 0.9);
+    let gap = size * rng.uniform(0.02, 0.5);
+    Approach::new(tc, gap, ut.abs() * rng.uniform(-0.05, 0.05), ut)
+}
+
+/// A tangential pass whose distance has a critical point within ±1e-9..1e-3 of the size around
+/// the target at t_c.
+fn graze(rng: &mut Rng, reach: f64, size: f64) -> Approach {
+    let eps = size * rng.log_uniform(1e-9, 1e-3) * rng.sign();
+    let ut = reach * rng.uniform(1.0, 4.0) * rng.sign();
+    Approach {
+        tc: rng.uniform(0.2, 0.9),
+        gap: eps,
+        un: 0.0,
+        ut,
+        cancel_rotation: true,
+    }
+}
+
+/// The approach of `kind`: for ordinary and fast-spin scenarios a hit inside the window (50 %),
+/// a hit after it (30 %) or a pass-by.
+fn draw_approach(rng: &mut Rng, kind: ScenarioKind, reach: f64, size: f64) -> Approach {
+    match kind {
+        ScenarioKind::Ordinary | ScenarioKind::FastSpin => {
+            let u = rng.unit();
+            if u < 0.5 {
+                aimed(rng, (0.05, 0.97), (1.2, 3.0), 0.05, 1.0, reach, size)
+            } else if u < 0.8 {
+                aimed(rng, (1.05, 3.0), (1.2, 3.0), 0.05, 1.0, reach, size)
+            } else {
+                pass_by(rng, reach, size)
+            }
+        }
+        ScenarioKind::MultiTurn => aimed(rng, (0.4, 1.6), (0.1, 1.5), 0.02, 0.5, reach, size),
+        ScenarioKind::Grazing => graze(rng, reach, size),
+        ScenarioKind::PassBy => pass_by(rng, reach, size),
+    }
+}
+
+/// The poses at t_c: object 1 at the origin, object 2 along a random normal n with the support
+/// points aligned along it, `gap_total` apart. Returns both poses, n and object 1's support point.
+fn configuration(
+    rng: &mut Rng,
+    c1: &dyn ConvexCurve,
+    c2: &dyn ConvexCurve,
+    gap_total: f64,
+) -> (Pose, Pose, Vector, Vector) {
+    let (a1, a2) = (rng.uniform(0.0, TAU), rng.uniform(0.0, TAU));
+    let n = rng.direction_tau();
+    let pose1c = Pose::new(Vector::ZERO, a1);
+    let rot2 = Pose::new(Vector::ZERO, a2);
+    let x1 = pose1c * c1.support_point(pose1c.rotation.inverse_transform_vector(n));
+    let x2_local = c2.support_point(rot2.rotation.inverse_transform_vector(-n));
+    let p2 = x1 + n * gap_total - rot2.rotation * x2_local;
+    let pose2c = Pose::new(p2, a2);
+    let size = c1.bounding_radius().max(c2.bounding_radius());
+    debug_assert!(((-world_support(c1, &pose1c, n) - world_support(c2, &pose2c, -n)) - gap_total).abs() <= 1e-9 * size);
+    (pose1c, pose2c, n, x1)
+}
+
+/// Both motions: the configuration of `ap` at t_c (`gap_total` = target + gap along n), the
+/// relative velocity of `ap` plus a common drift, run back from t_c to time 0. `centres` and
+/// `spins` are the bodies' rotation centres (local) and angular velocities.
+fn draw_motions(
+    rng: &mut Rng,
+    c1: &dyn ConvexCurve,
+    c2: &dyn ConvexCurve,
+    centres: (Vector, Vector),
+    spins: (f64, f64),
+    ap: &Approach,
+    gap_total: f64,
+) -> (NonlinearRigidMotion, NonlinearRigidMotion) {
+    let ((lc1, lc2), (w1, w2)) = (centres, spins);
+    let reach = c1.bounding_radius() + c2.bounding_radius();
+    let (pose1c, pose2c, n, x1) = configuration(rng, c1, c2, gap_total);
+    // Velocities: v_rel = v2 − v1 = −un·n + ut·n⊥ (+ the normal part cancelling the spins' effect
+    // on the gap along n when requested: then the distance has a critical point at tc).
+    let mut un = ap.un;
+    if ap.cancel_rotation {
+        let (cc1, cc2) = (pose1c * lc1, pose2c * lc2);
+        let x2 = x1 + n * gap_total;
+        // d/dt g(n) = v_rel·n + [ω2 (x2 − c2)⊥ − ω1 (x1 − c1)⊥]·n must vanish.
+        let rot_term = (perp(x2 - cc2) * w2 - perp(x1 - cc1) * w1).dot(n);
+        un = rot_term; // v_rel·n = −un.
+    }
+    let v_rel = -n * un + perp(n) * ap.ut;
+    let v_common = rng.in_disc(2.0 * reach);
+    let (v1, v2) = (v_common, v_common + v_rel);
+
+    let m1c = NonlinearRigidMotion::new(pose1c, lc1, v1, w1);
+    let m2c = NonlinearRigidMotion::new(pose2c, lc2, v2, w2);
+    (
+        NonlinearRigidMotion::new(m1c.position_at_time(-ap.tc), lc1, v1, w1),
+        NonlinearRigidMotion::new(m2c.position_at_time(-ap.tc), lc2, v2, w2),
+    )
+}
+
 /// One attempt; `None` when the drawn scenario does not start separated.
 fn try_generate(class: ScenarioClass, seed: u64, rng: &mut Rng) -> Option<Scenario> {
     let scale = rng.log_uniform(0.01, 100.0);
@@ -400,164 +556,12 @@ fn try_generate(class: ScenarioClass, seed: u64, rng: &mut Rng) -> Option<Scenar
     let (br1, br2) = (c1.bounding_radius(), c2.bounding_radius());
     let size = br1.max(br2);
     let reach = br1 + br2;
-
-    let target = {
-        let u = rng.unit();
-        if u < 0.45 {
-            0.0
-        } else if u < 0.85 {
-            size * rng.uniform(1e-6, 4e-6)
-        } else {
-            size * rng.uniform(1e-3, 0.05)
-        }
-    };
-
-    // Spins.
-    let (w1, w2) = match kind {
-        ScenarioKind::Ordinary => (rng.uniform(-3.0, 3.0), rng.uniform(-3.0, 3.0)),
-        ScenarioKind::FastSpin => {
-            let fast = rng.sign() * rng.uniform(20.0, 60.0);
-            let other = if rng.chance(0.3) {
-                rng.sign() * rng.uniform(20.0, 60.0)
-            } else {
-                rng.uniform(-5.0, 5.0)
-            };
-            if rng.chance(0.5) {
-                (fast, other)
-            } else {
-                (other, fast)
-            }
-        }
-        ScenarioKind::MultiTurn => {
-            let fast = rng.sign() * rng.uniform(30.0, 60.0);
-            let other = rng.uniform(-3.0, 3.0);
-            if rng.chance(0.5) {
-                (fast, other)
-            } else {
-                (other, fast)
-            }
-        }
-        ScenarioKind::Grazing => {
-            let u = rng.unit();
-            if u < 0.5 {
-                (0.0, 0.0)
-            } else if u < 0.8 {
-                (rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0))
-            } else if rng.chance(0.5) {
-                (rng.sign() * rng.uniform(20.0, 60.0), rng.uniform(-2.0, 2.0))
-            } else {
-                (rng.uniform(-2.0, 2.0), rng.sign() * rng.uniform(20.0, 60.0))
-            }
-        }
-        ScenarioKind::PassBy => (rng.uniform(-10.0, 10.0), rng.uniform(-10.0, 10.0)),
-    };
-
-    // Rotation centres (local frame).
-    let lc1 = if rng.chance(0.3) {
-        rng.in_disc(0.5 * br1)
-    } else {
-        Vector::ZERO
-    };
-    let lc2 = if rng.chance(0.3) {
-        rng.in_disc(0.5 * br2)
-    } else {
-        Vector::ZERO
-    };
-
-    // Configuration time, gap and relative velocity (normal part un, tangential part ut, with
-    // un > 0 approaching) relative to the normal n from object 1 to object 2.
-    let (tc, gap, un, ut, cancel_rotation) = match kind {
-        ScenarioKind::Ordinary | ScenarioKind::FastSpin => {
-            let u = rng.unit();
-            if u < 0.5 {
-                let tc = rng.uniform(0.05, 0.97);
-                let un = reach * rng.uniform(1.2, 3.0) / tc;
-                (
-                    tc,
-                    -size * rng.uniform(0.0, 0.05),
-                    un,
-                    un * rng.uniform(-1.0, 1.0),
-                    false,
-                )
-            } else if u < 0.8 {
-                let tc = rng.uniform(1.05, 3.0);
-                let un = reach * rng.uniform(1.2, 3.0) / tc;
-                (
-                    tc,
-                    -size * rng.uniform(0.0, 0.05),
-                    un,
-                    un * rng.uniform(-1.0, 1.0),
-                    false,
-                )
-            } else {
-                let ut = reach * rng.uniform(1.0, 4.0) * rng.sign();
-                (
-                    rng.uniform(0.1, 0.9),
-                    size * rng.uniform(0.02, 0.5),
-                    ut.abs() * rng.uniform(-0.05, 0.05),
-                    ut,
-                    false,
-                )
-            }
-        }
-        ScenarioKind::MultiTurn => {
-            let tc = rng.uniform(0.4, 1.6);
-            let un = reach * rng.uniform(0.1, 1.5) / tc;
-            (
-                tc,
-                -size * rng.uniform(0.0, 0.02),
-                un,
-                un * rng.uniform(-0.5, 0.5),
-                false,
-            )
-        }
-        ScenarioKind::Grazing => {
-            let eps = size * rng.log_uniform(1e-9, 1e-3) * rng.sign();
-            let ut = reach * rng.uniform(1.0, 4.0) * rng.sign();
-            (rng.uniform(0.2, 0.9), eps, 0.0, ut, true)
-        }
-        ScenarioKind::PassBy => {
-            let ut = reach * rng.uniform(1.0, 4.0) * rng.sign();
-            (
-                rng.uniform(0.1, 0.9),
-                size * rng.uniform(0.02, 0.5),
-                ut.abs() * rng.uniform(-0.05, 0.05),
-                ut,
-                false,
-            )
-        }
-    };
-    let gap_total = target + gap;
-
-    // Configuration at tc: object 1 at the origin, object 2 along n with support points aligned.
-    let (a1, a2) = (rng.uniform(0.0, TAU), rng.uniform(0.0, TAU));
-    let n = rng.direction();
-    let pose1c = Pose::new(Vector::ZERO, a1);
-    let rot2 = Pose::new(Vector::ZERO, a2);
-    let x1 = pose1c * c1.support_point(pose1c.rotation.inverse_transform_vector(n));
-    let x2_local = c2.support_point(rot2.rotation.inverse_transform_vector(-n));
-    let p2 = x1 + n * gap_total - rot2.rotation * x2_local;
-    let pose2c = Pose::new(p2, a2);
-    debug_assert!(((-world_support(c1, &pose1c, n) - world_support(c2, &pose2c, -n)) - gap_total).abs() <= 1e-9 * size);
-
-    // Velocities: v_rel = v2 − v1 = −un·n + ut·n⊥ (+ the normal part cancelling the spins' effect
-    // on the gap along n when requested: then the distance has a critical point at tc).
-    let mut un = un;
-    if cancel_rotation {
-        let (cc1, cc2) = (pose1c * lc1, pose2c * lc2);
-        let x2 = x1 + n * gap_total;
-        // d/dt g(n) = v_rel·n + [ω2 (x2 − c2)⊥ − ω1 (x1 − c1)⊥]·n must vanish.
-        let rot_term = (perp(x2 - cc2) * w2 - perp(x1 - cc1) * w1).dot(n);
-        un = rot_term; // v_rel·n = −un.
-    }
-    let v_rel = -n * un + perp(n) * ut;
-    let v_common = rng.in_disc(2.0 * reach);
-    let (v1, v2) = (v_common, v_common + v_rel);
-
-    let m1c = NonlinearRigidMotion::new(pose1c, lc1, v1, w1);
-    let m2c = NonlinearRigidMotion::new(pose2c, lc2, v2, w2);
-    let motion1 = NonlinearRigidMotion::new(m1c.position_at_time(-tc), lc1, v1, w1);
-    let motion2 = NonlinearRigidMotion::new(m2c.position_at_time(-tc), lc2, v2, w2);
+    let target = draw_target(rng, size);
+    let spins = draw_spins(rng, kind);
+    let lc1 = draw_centre(rng, br1);
+    let lc2 = draw_centre(rng, br2);
+    let ap = draw_approach(rng, kind, reach, size);
+    let (motion1, motion2) = draw_motions(rng, c1, c2, (lc1, lc2), spins, &ap, target + ap.gap);
 
     let sc = Scenario {
         class,
@@ -571,8 +575,8 @@ fn try_generate(class: ScenarioClass, seed: u64, rng: &mut Rng) -> Option<Scenar
         t1: 1.0,
         target,
         scale,
-        tc,
-        aimed_gap: gap,
+        tc: ap.tc,
+        aimed_gap: ap.gap,
     };
     if !sc.is_finite() {
         return None;

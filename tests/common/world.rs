@@ -1,9 +1,14 @@
-//! A rapier world driven by `PhysicsPipeline::step`: the sets, the pipeline and one step. One
-//! harness for the rapier tests (`tests/rapier_integration.rs`, `tests/threads.rs`) and the pile
-//! benchmark (`benches/support/pile.rs`); each wraps it with what it records.
+//! A rapier world driven by `PhysicsPipeline::step`: the sets, the pipeline and one step, and a
+//! hash of its bodies' state. The one harness of the rapier tests (`tests/rapier_integration.rs`,
+//! `tests/threads.rs`, `tests/golden.rs`), the rapier examples (through `examples/common`) and
+//! the pile benchmarks (through `benches/support`); each wraps it with what it records. The scenes
+//! built in it are in `scenes.rs`.
 #![allow(dead_code)]
 
 use rapier2d_f64::prelude::*;
+
+/// The gravity of the scenes that have one: 9.81 m/s² down the y axis.
+pub const GRAVITY: Vector = Vector::new(0.0, -9.81);
 
 /// Everything `PhysicsPipeline::step` takes, with default integration parameters.
 pub struct World {
@@ -64,52 +69,6 @@ impl World {
             events,
         );
     }
-}
-
-/// Bodies of [`mixed_pile`] besides its three shots (enough for rapier to split its narrow
-/// phase, solver and CCD sweeps between workers: more than 64 pairs, 64 swept bodies).
-pub const MIXED_PILE_BODIES: usize = 150;
-
-/// A pile of ellipses, rounded polygons and capsule-ellipses on a box, with three fast CCD
-/// ellipse shots into it (`tests/threads.rs`, `tests/golden.rs`). Returns the dynamic bodies.
-pub fn mixed_pile(world: &mut World) -> Vec<RigidBodyHandle> {
-    use smooth_ccd2d::{CapsuleEllipse, Ellipse, RoundedPolygon};
-    let mut handles = Vec::new();
-    world.insert(
-        RigidBodyBuilder::fixed().translation(Vector::new(0.0, -0.5)),
-        ColliderBuilder::cuboid(20.0, 0.5),
-    );
-    for i in 0..MIXED_PILE_BODIES {
-        let x = -9.0 + 0.9 * (i % 20) as f64;
-        let y = 1.0 + 0.9 * (i / 20) as f64;
-        let shape = match i % 4 {
-            0 => SharedShape::new(Ellipse::new(0.4, 0.18)),
-            1 => SharedShape::new(RoundedPolygon::regular(3 + i % 5, 0.3, 0.03)),
-            2 => SharedShape::new(CapsuleEllipse::new(0.1, 0.15, 0.2)),
-            _ => SharedShape::new(Ellipse::new(0.25, 0.25)),
-        };
-        let (h, _) = world.insert(
-            RigidBodyBuilder::dynamic()
-                .translation(Vector::new(x, y))
-                .rotation(0.37 * i as f64)
-                .angvel(2.0 - 0.1 * i as f64)
-                .ccd_enabled(i % 2 == 0),
-            ColliderBuilder::new(shape),
-        );
-        handles.push(h);
-    }
-    for k in 0..3 {
-        let (shot, _) = world.insert(
-            RigidBodyBuilder::dynamic()
-                .translation(Vector::new(-15.0 - 3.0 * k as f64, 1.5 + 1.2 * k as f64))
-                .linvel(Vector::new(250.0, 0.0))
-                .angvel(120.0)
-                .ccd_enabled(true),
-            ColliderBuilder::new(SharedShape::new(Ellipse::new(0.3, 0.08))),
-        );
-        handles.push(shot);
-    }
-    handles
 }
 
 /// FNV-1a over the bits of every body's pose and velocities (in the order of `handles`), and

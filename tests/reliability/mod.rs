@@ -1,10 +1,14 @@
-//! Shared by `tests/adversarial.rs` and `tests/threads.rs`: a deterministic generator of random
-//! and adversarial inputs ([`generate`]), and [`run_case`], which puts one input through every
-//! query of the crate (stationary distance, time of impact, half-space queries, every
-//! `SmoothDispatcher` query, the shapes' parry methods), checks each answer against what the
-//! crate documents, and returns the violations with a digest of every number returned (for the
-//! bit-for-bit comparisons of the determinism and thread tests).
+//! The fuzz generator, shared by `tests/adversarial.rs`, `tests/threads.rs` and `tests/golden.rs`
+//! (each declares `mod common;` beside `mod reliability;`): a deterministic generator of random
+//! and adversarial inputs ([`generate`], drawing from the common splitmix64 generator of
+//! `tests/common/rng.rs` seeded with [`Rng::mixed`]), and [`run_case`], which puts one input
+//! through every query of the crate (stationary distance, time of impact, half-space queries,
+//! every `SmoothDispatcher` query, the shapes' parry methods), checks each answer against what
+//! the crate documents, and returns the violations with a digest of every number returned (for
+//! the bit-for-bit comparisons of the determinism, thread and golden tests).
 #![allow(dead_code)]
+
+pub use crate::common::rng::Rng;
 
 use parry2d_f64::math::{Pose, Rotation, Vector};
 use parry2d_f64::query::details::ShapeCastOptions;
@@ -27,59 +31,8 @@ use std::f64::consts::PI;
 use std::sync::Arc;
 
 // ---------------------------------------------------------------------------------------------
-// Random numbers
+// Wild numbers
 // ---------------------------------------------------------------------------------------------
-
-/// splitmix64: small, seedable, identical on every platform.
-#[derive(Clone, Debug)]
-pub struct Rng(u64);
-
-impl Rng {
-    pub fn new(seed: u64) -> Self {
-        Rng(seed ^ 0x9E37_79B9_7F4A_7C15)
-    }
-    pub fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    /// Uniform in [0, 1).
-    pub fn unit(&mut self) -> f64 {
-        (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
-    }
-    pub fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.unit()
-    }
-    pub fn log_uniform(&mut self, lo: f64, hi: f64) -> f64 {
-        (lo.ln() + (hi.ln() - lo.ln()) * self.unit()).exp()
-    }
-    /// Uniform in lo..=hi.
-    pub fn int(&mut self, lo: usize, hi: usize) -> usize {
-        lo + (self.next_u64() % (hi - lo + 1) as u64) as usize
-    }
-    pub fn chance(&mut self, p: f64) -> bool {
-        self.unit() < p
-    }
-    pub fn sign(&mut self) -> f64 {
-        if self.chance(0.5) {
-            1.0
-        } else {
-            -1.0
-        }
-    }
-    pub fn angle(&mut self) -> f64 {
-        self.uniform(-PI, PI)
-    }
-    pub fn direction(&mut self) -> Vector {
-        let a = self.angle();
-        Vector::new(a.cos(), a.sin())
-    }
-    pub fn pick<T: Copy>(&mut self, xs: &[T]) -> T {
-        xs[self.int(0, xs.len() - 1)]
-    }
-}
 
 /// Numbers that break naive code: NaN, infinities, signed zeros, the extremes of the range,
 /// subnormals, values whose square overflows or underflows.
@@ -478,22 +431,59 @@ pub const CLASSES: [&str; 9] = [
     "thin-ellipse",
 ];
 
+/// A case being drawn: the shapes, poses, motions and window, before the numbers every case gets
+/// ([`finish_case`]).
+struct Draft {
+    class: &'static str,
+    supported: bool,
+    /// The size.
+    s: f64,
+    s1: ShapeSpec,
+    s2: ShapeSpec,
+    pos12: Pose,
+    m1: NonlinearRigidMotion,
+    m2: NonlinearRigidMotion,
+    t0: f64,
+    t1: f64,
+    target: f64,
+    /// Probability that [`finish_case`] makes a number wild (0 but for the `wild` class).
+    p: f64,
+    min_gap: Option<f64>,
+}
+
 /// Case `index` of the batch `seed`: every class in turn.
 pub fn generate(seed: u64, index: u64) -> Case {
-    let mut rng = Rng::new(seed.wrapping_mul(0x2545_F491_4F6C_DD1D) ^ index.wrapping_mul(0x9E37_79B9));
+    let mut rng = Rng::mixed(seed.wrapping_mul(0x2545_F491_4F6C_DD1D) ^ index.wrapping_mul(0x9E37_79B9));
     let class = CLASSES[(index % CLASSES.len() as u64) as usize];
     // Sizes 1e-6..1e6 (extreme-scale also goes beyond).
-    let mut s = rng.log_uniform(1e-6, 1e6);
+    let s = rng.log_uniform(1e-6, 1e6);
+    let (s1, s2) = draw_shapes(&mut rng, class, s);
+    let (window, t0, t1) = draw_window(&mut rng);
+    let mut d = draw_motions(&mut rng, class, s, (s1, s2), window, (t0, t1));
+    match class {
+        "coincident" => make_coincident(&mut rng, &mut d),
+        "concentric" => make_concentric(&mut d),
+        "touching-at-t0" | "grazing" => make_discs_touch_or_graze(&mut rng, &mut d, window),
+        "extreme-scale" => make_extreme_scale(&mut rng, &mut d, window),
+        "wild" => make_wild(&mut rng, &mut d),
+        _ => {}
+    }
+    finish_case(&mut rng, seed, index, d)
+}
+
+/// The two shapes of `class` at size `s` (ratios down to 1e-6 for thin ellipses; a parry shape on
+/// either side for parry pairs).
+fn draw_shapes(rng: &mut Rng, class: &str, s: f64) -> (ShapeSpec, ShapeSpec) {
     let mut min_ratio = 1e-3;
     if class == "thin-ellipse" {
         min_ratio = 1e-6;
     }
-    let mut s1 = own_spec(&mut rng, s, min_ratio);
+    let mut s1 = own_spec(rng, s, min_ratio);
     let mut s2 = if class == "parry-pair" {
-        parry_spec(&mut rng, s)
+        parry_spec(rng, s)
     } else {
         let s2 = s * rng.log_uniform(0.3, 3.0);
-        own_spec(&mut rng, s2, min_ratio)
+        own_spec(rng, s2, min_ratio)
     };
     if class == "thin-ellipse" {
         let ratio = rng.log_uniform(1e-6, 1e-3);
@@ -510,6 +500,11 @@ pub fn generate(seed: u64, index: u64) -> Case {
     if class == "parry-pair" && rng.chance(0.5) {
         std::mem::swap(&mut s1, &mut s2);
     }
+    (s1, s2)
+}
+
+/// (window length, t0, t1): one time in ten an empty window, one in ten a reversed one.
+fn draw_window(rng: &mut Rng) -> (f64, f64, f64) {
     let window = if rng.chance(0.5) {
         1.0
     } else {
@@ -522,150 +517,164 @@ pub fn generate(seed: u64, index: u64) -> Case {
         1 => t1 = t0 - window,
         _ => {}
     }
+    (window, t0, t1)
+}
+
+/// The random pose and motions of the shapes (shape 1 starting at the origin) and the target.
+fn draw_motions(
+    rng: &mut Rng,
+    class: &'static str,
+    s: f64,
+    (s1, s2): (ShapeSpec, ShapeSpec),
+    window: f64,
+    (t0, t1): (f64, f64),
+) -> Draft {
     let reach = 2.0 * s + s * rng.uniform(0.0, 2.0);
     let mut pos12 = pose(0.0, 0.0, rng.angle());
     pos12.translation = rng.direction() * (reach * rng.uniform(0.0, 1.5));
-    let mut m1 = motion(&mut rng, Pose::IDENTITY, s, window);
-    let mut m2 = motion(&mut rng, pos12, s, window);
+    let mut m1 = motion(rng, Pose::IDENTITY, s, window);
+    let m2 = motion(rng, pos12, s, window);
     m1.start = pose(0.0, 0.0, 0.0);
-    let mut min_gap = None;
-    let mut supported = true;
-    let mut target = if rng.chance(0.7) {
+    let target = if rng.chance(0.7) {
         0.0
     } else {
         s * rng.uniform(0.0, 0.05)
     };
-    match class {
-        "coincident" => {
-            s2 = s1.clone();
-            pos12 = if rng.chance(0.5) {
-                Pose::IDENTITY
-            } else {
-                pose(1e-13 * s, 0.0, 0.0)
-            };
-            // Same motion: coincident over the whole window.
-            m2 = NonlinearRigidMotion::new(m1.start * pos12, m1.local_center, m1.linvel, m1.angvel);
-        }
-        "concentric" => {
-            pos12.translation = Vector::ZERO;
-            m2.start = pos12;
-            m2.local_center = Vector::ZERO;
-            m1.local_center = Vector::ZERO;
-            // Same velocity: the centres stay together; the spins differ.
-            m2.linvel = m1.linvel;
-        }
-        "touching-at-t0" | "grazing" => {
-            // Two discs (exact distance) or one of ours against a disc, placed at an exact gap.
-            let r1 = s * rng.uniform(0.3, 1.0);
-            let r2 = s * rng.uniform(0.3, 1.0);
-            s1 = if rng.chance(0.5) {
-                ShapeSpec::Ball(r1)
-            } else {
-                ShapeSpec::Ellipse(r1, r1)
-            };
-            s2 = ShapeSpec::Ball(r2);
-            let gap = if class == "touching-at-t0" {
-                0.0
-            } else {
-                rng.pick(&[-1e-9, -1e-12, 0.0, 1e-12, 1e-9, 1e-6]) * s
-            };
-            let n = rng.direction();
-            let tan = Vector::new(-n.y, n.x);
-            let dist = r1 + r2 + gap;
-            t1 = t0 + window;
-            if class == "touching-at-t0" {
-                // Touching at t0, approaching, separating or sliding.
-                pos12 = Pose::new(n * (r1 + r2), rng.angle());
-                let v = (n * rng.uniform(-3.0, 3.0) + tan * rng.uniform(-3.0, 3.0)) * (s / window);
-                let w = rng.uniform(-5.0, 5.0);
-                m1 = NonlinearRigidMotion::new(Pose::new(Vector::ZERO, rng.angle()), Vector::ZERO, Vector::ZERO, 0.0);
-                // `start` is the pose at time 0; the window starts at t0.
-                m2 = NonlinearRigidMotion::new(Pose::new(n * (r1 + r2) - v * t0, -w * t0), Vector::ZERO, v, w);
-                min_gap = Some(0.0);
-            } else {
-                // Sliding past along the tangent: the centre distance is smallest (= dist) at
-                // tc, inside the window.
-                let tc = t0 + window * rng.uniform(0.2, 0.8);
-                let speed = s * rng.uniform(0.5, 4.0) / window;
-                let start = n * dist - tan * (speed * (tc - t0));
-                m1 = NonlinearRigidMotion::new(Pose::new(Vector::ZERO, rng.angle()), Vector::ZERO, Vector::ZERO, 0.0);
-                m2 = NonlinearRigidMotion::new(
-                    Pose::new(start - tan * (speed * t0), 0.0),
-                    Vector::ZERO,
-                    tan * speed,
-                    0.0,
-                );
-                pos12 = Pose::new(n * dist, 0.0);
-                min_gap = Some(gap);
-            }
-            target = 0.0;
-        }
-        "extreme-scale" => {
-            // Sizes and positions beyond the supported range, in both directions: up to the
-            // constructors' limits (1e±50), and beyond them (the constructors refuse, parry's
-            // shapes are taken as they are).
-            s = rng.pick(&[
-                1e-12, 1e-9, 1e9, 1e12, 1e-45, 1e45, 1e-50, 1e50, 1e-60, 1e60, 1e-100, 1e100, 1e-200, 1e200, 1e-300,
-                1e300,
-            ]);
-            supported = false;
-            let min_ratio = if rng.chance(0.3) { 1e-40 } else { 1e-3 };
-            s1 = own_spec(&mut rng, s, min_ratio);
-            let s2_size = s * rng.uniform(0.5, 2.0);
-            s2 = if rng.chance(0.3) {
-                parry_spec(&mut rng, s2_size)
-            } else {
-                own_spec(&mut rng, s2_size, min_ratio)
-            };
-            pos12.translation = rng.direction() * (s * rng.uniform(0.0, 4.0));
-            m1 = motion(&mut rng, Pose::IDENTITY, s, window);
-            m2 = motion(&mut rng, pos12, s, window);
-            target *= s;
-        }
-        "wild" => {
-            let p = 0.12;
-            supported = false;
-            if rng.chance(0.3) {
-                s2 = parry_spec(&mut rng, s);
-            }
-            s1 = wild_spec(&mut rng, &s1, p);
-            s2 = wild_spec(&mut rng, &s2, p);
-            pos12 = wild_pose(&mut rng, pos12, p);
-            m1 = wild_motion(&mut rng, &m1, p);
-            m2 = wild_motion(&mut rng, &m2, p);
-            let t0w = wild(&mut rng, t0, p);
-            t1 = wild(&mut rng, t1, p);
-            target = wild(&mut rng, target, p * 0.5);
-            return finish_case(
-                &mut rng, seed, index, class, supported, s, s1, s2, pos12, m1, m2, t0w, t1, target, p, None,
-            );
-        }
-        _ => {}
+    Draft {
+        class,
+        supported: true,
+        s,
+        s1,
+        s2,
+        pos12,
+        m1,
+        m2,
+        t0,
+        t1,
+        target,
+        p: 0.0,
+        min_gap: None,
     }
-    finish_case(
-        &mut rng, seed, index, class, supported, s, s1, s2, pos12, m1, m2, t0, t1, target, 0.0, min_gap,
-    )
 }
 
-#[allow(clippy::too_many_arguments)]
-fn finish_case(
-    rng: &mut Rng,
-    seed: u64,
-    index: u64,
-    class: &'static str,
-    supported: bool,
-    s: f64,
-    s1: ShapeSpec,
-    s2: ShapeSpec,
-    pos12: Pose,
-    m1: NonlinearRigidMotion,
-    m2: NonlinearRigidMotion,
-    t0: f64,
-    t1: f64,
-    target: f64,
-    p: f64,
-    min_gap: Option<f64>,
-) -> Case {
+/// `coincident`: shape 2 a copy of shape 1 at its pose (or 1e-13 of the size away), on the same
+/// motion.
+fn make_coincident(rng: &mut Rng, d: &mut Draft) {
+    d.s2 = d.s1.clone();
+    d.pos12 = if rng.chance(0.5) {
+        Pose::IDENTITY
+    } else {
+        pose(1e-13 * d.s, 0.0, 0.0)
+    };
+    // Same motion: coincident over the whole window.
+    d.m2 = NonlinearRigidMotion::new(d.m1.start * d.pos12, d.m1.local_center, d.m1.linvel, d.m1.angvel);
+}
+
+/// `concentric`: the same centre, moving together; the spins differ.
+fn make_concentric(d: &mut Draft) {
+    d.pos12.translation = Vector::ZERO;
+    d.m2.start = d.pos12;
+    d.m2.local_center = Vector::ZERO;
+    d.m1.local_center = Vector::ZERO;
+    // Same velocity: the centres stay together; the spins differ.
+    d.m2.linvel = d.m1.linvel;
+}
+
+/// `touching-at-t0` and `grazing`: two discs (exact distance) or one of ours against a disc,
+/// placed at an exact gap: touching at t0, or sliding past with the smallest gap inside the window.
+fn make_discs_touch_or_graze(rng: &mut Rng, d: &mut Draft, window: f64) {
+    let (s, t0) = (d.s, d.t0);
+    let touching = d.class == "touching-at-t0";
+    let r1 = s * rng.uniform(0.3, 1.0);
+    let r2 = s * rng.uniform(0.3, 1.0);
+    d.s1 = if rng.chance(0.5) {
+        ShapeSpec::Ball(r1)
+    } else {
+        ShapeSpec::Ellipse(r1, r1)
+    };
+    d.s2 = ShapeSpec::Ball(r2);
+    let gap = if touching {
+        0.0
+    } else {
+        rng.pick(&[-1e-9, -1e-12, 0.0, 1e-12, 1e-9, 1e-6]) * s
+    };
+    let n = rng.direction();
+    let tan = Vector::new(-n.y, n.x);
+    let dist = r1 + r2 + gap;
+    d.t1 = t0 + window;
+    if touching {
+        // Touching at t0, approaching, separating or sliding.
+        d.pos12 = Pose::new(n * (r1 + r2), rng.angle());
+        let v = (n * rng.uniform(-3.0, 3.0) + tan * rng.uniform(-3.0, 3.0)) * (s / window);
+        let w = rng.uniform(-5.0, 5.0);
+        d.m1 = NonlinearRigidMotion::new(Pose::new(Vector::ZERO, rng.angle()), Vector::ZERO, Vector::ZERO, 0.0);
+        // `start` is the pose at time 0; the window starts at t0.
+        d.m2 = NonlinearRigidMotion::new(Pose::new(n * (r1 + r2) - v * t0, -w * t0), Vector::ZERO, v, w);
+        d.min_gap = Some(0.0);
+    } else {
+        // Sliding past along the tangent: the centre distance is smallest (= dist) at
+        // tc, inside the window.
+        let tc = t0 + window * rng.uniform(0.2, 0.8);
+        let speed = s * rng.uniform(0.5, 4.0) / window;
+        let start = n * dist - tan * (speed * (tc - t0));
+        d.m1 = NonlinearRigidMotion::new(Pose::new(Vector::ZERO, rng.angle()), Vector::ZERO, Vector::ZERO, 0.0);
+        d.m2 = NonlinearRigidMotion::new(
+            Pose::new(start - tan * (speed * t0), 0.0),
+            Vector::ZERO,
+            tan * speed,
+            0.0,
+        );
+        d.pos12 = Pose::new(n * dist, 0.0);
+        d.min_gap = Some(gap);
+    }
+    d.target = 0.0;
+}
+
+/// `extreme-scale`: sizes and positions beyond the supported range, in both directions: up to
+/// the constructors' limits (1e±50), and beyond them (the constructors refuse, parry's shapes are
+/// taken as they are).
+fn make_extreme_scale(rng: &mut Rng, d: &mut Draft, window: f64) {
+    let s = rng.pick(&[
+        1e-12, 1e-9, 1e9, 1e12, 1e-45, 1e45, 1e-50, 1e50, 1e-60, 1e60, 1e-100, 1e100, 1e-200, 1e200, 1e-300, 1e300,
+    ]);
+    d.s = s;
+    d.supported = false;
+    let min_ratio = if rng.chance(0.3) { 1e-40 } else { 1e-3 };
+    d.s1 = own_spec(rng, s, min_ratio);
+    let s2_size = s * rng.uniform(0.5, 2.0);
+    d.s2 = if rng.chance(0.3) {
+        parry_spec(rng, s2_size)
+    } else {
+        own_spec(rng, s2_size, min_ratio)
+    };
+    d.pos12.translation = rng.direction() * (s * rng.uniform(0.0, 4.0));
+    d.m1 = motion(rng, Pose::IDENTITY, s, window);
+    d.m2 = motion(rng, d.pos12, s, window);
+    d.target *= s;
+}
+
+/// `wild`: every number of the case a [`WILD`] one with probability 0.12 (the target 0.06).
+fn make_wild(rng: &mut Rng, d: &mut Draft) {
+    let p = 0.12;
+    d.supported = false;
+    if rng.chance(0.3) {
+        d.s2 = parry_spec(rng, d.s);
+    }
+    d.s1 = wild_spec(rng, &d.s1, p);
+    d.s2 = wild_spec(rng, &d.s2, p);
+    d.pos12 = wild_pose(rng, d.pos12, p);
+    d.m1 = wild_motion(rng, &d.m1, p);
+    d.m2 = wild_motion(rng, &d.m2, p);
+    d.t0 = wild(rng, d.t0, p);
+    d.t1 = wild(rng, d.t1, p);
+    d.target = wild(rng, d.target, p * 0.5);
+    d.p = p;
+}
+
+/// The case: `d` with the numbers of the other queries (ray, point, direction, margins, density,
+/// scaling), each made wild with probability `d.p`.
+fn finish_case(rng: &mut Rng, seed: u64, index: u64, d: Draft) -> Case {
+    let (s, p) = (d.s, d.p);
     let o = rng_vec(rng, 3.0 * s);
     let o = wild_vec(rng, o, p);
     let dir = rng_vec(rng, 1.0);
@@ -690,17 +699,17 @@ fn finish_case(
     Case {
         seed,
         index,
-        class,
-        supported,
+        class: d.class,
+        supported: d.supported,
         scale: s,
-        s1,
-        s2,
-        pos12,
-        m1,
-        m2,
-        t0,
-        t1,
-        target,
+        s1: d.s1,
+        s2: d.s2,
+        pos12: d.pos12,
+        m1: d.m1,
+        m2: d.m2,
+        t0: d.t0,
+        t1: d.t1,
+        target: d.target,
         stop,
         prediction,
         local_vel12,
@@ -711,7 +720,7 @@ fn finish_case(
         dir,
         density,
         rescale,
-        min_gap,
+        min_gap: d.min_gap,
     }
 }
 
@@ -771,6 +780,28 @@ impl Ctx<'_> {
         if !v.is_finite() {
             self.bad(format!("{what}: non-finite vector {v:?}"));
         }
+    }
+    /// Flags the answer `r` of query `what` unless it is the `expected` error, or `Ok` where none
+    /// is expected (or `Degenerate` on an unsupported case).
+    fn expect_error<T: std::fmt::Debug>(
+        &mut self,
+        what: &str,
+        r: &Result<T, QueryError>,
+        expected: Option<QueryError>,
+    ) {
+        match (r, expected) {
+            (Err(e), Some(x)) if *e == x => {}
+            (Err(QueryError::Degenerate), None) if !self.case.supported => {}
+            (Ok(_), None) => {}
+            _ => self.bad(format!("{what}: got {r:?}, expected error {expected:?}")),
+        }
+    }
+    /// Tags the answer `r` as `prefix:<status>` or `prefix:Err(<error>)`.
+    fn tag_answer<T, S: std::fmt::Debug>(&mut self, prefix: &str, r: &Result<T, QueryError>, status: impl Fn(&T) -> S) {
+        self.tag(match r {
+            Ok(d) => format!("{prefix}:{:?}", status(d)),
+            Err(e) => format!("{prefix}:Err({e:?})"),
+        });
     }
 }
 
@@ -949,18 +980,8 @@ fn check_stationary(cx: &mut Ctx, c1: &dyn ConvexCurve, c2: &dyn ConvexCurve) {
     } else {
         None
     };
-    match (&r, expected_err) {
-        (Err(e), Some(x)) if *e == x => {}
-        (Err(QueryError::Degenerate), None) if !case.supported => {}
-        (Ok(_), None) => {}
-        _ => cx.bad(format!(
-            "stationary_distance: got {r:?}, expected error {expected_err:?}"
-        )),
-    }
-    cx.tag(match &r {
-        Ok(d) => format!("dist:{:?}", d.status),
-        Err(e) => format!("dist:Err({e:?})"),
-    });
+    cx.expect_error("stationary_distance", &r, expected_err);
+    cx.tag_answer("dist", &r, |d| d.status);
     let Ok(d) = r else {
         cx.word(0xE);
         return;
@@ -1056,16 +1077,8 @@ fn check_toi(cx: &mut Ctx, c1: &dyn ConvexCurve, c2: &dyn ConvexCurve) {
     } else {
         None
     };
-    match (&r, expected_err) {
-        (Err(e), Some(x)) if *e == x => {}
-        (Err(QueryError::Degenerate), None) if !case.supported => {}
-        (Ok(_), None) => {}
-        _ => cx.bad(format!("time_of_impact: got {r:?}, expected error {expected_err:?}")),
-    }
-    cx.tag(match &r {
-        Ok(d) => format!("toi:{:?}", d.status),
-        Err(e) => format!("toi:Err({e:?})"),
-    });
+    cx.expect_error("time_of_impact", &r, expected_err);
+    cx.tag_answer("toi", &r, |d| d.status);
     let Ok(r) = r else {
         cx.word(0xE);
         return;
@@ -1148,10 +1161,7 @@ fn check_halfspace(cx: &mut Ctx, c: &dyn ConvexCurve, hs: &HalfSpace, curve_firs
             case.pos12.is_finite()
         )),
     }
-    cx.tag(match &r {
-        Ok(d) => format!("hs-dist:{:?}", d.status),
-        Err(e) => format!("hs-dist:Err({e:?})"),
-    });
+    cx.tag_answer("hs-dist", &r, |d| d.status);
     if let Ok(d) = &r {
         check_distance_value(cx, "halfspace_distance", d);
     }
@@ -1178,18 +1188,8 @@ fn check_halfspace(cx: &mut Ctx, c: &dyn ConvexCurve, hs: &HalfSpace, curve_firs
     } else {
         None
     };
-    match (&r, expected_err) {
-        (Err(e), Some(x)) if *e == x => {}
-        (Err(QueryError::Degenerate), None) if !case.supported => {}
-        (Ok(_), None) => {}
-        _ => cx.bad(format!(
-            "time_of_impact_halfspace: got {r:?}, expected error {expected_err:?}"
-        )),
-    }
-    cx.tag(match &r {
-        Ok(d) => format!("hs-toi:{:?}", d.status),
-        Err(e) => format!("hs-toi:Err({e:?})"),
-    });
+    cx.expect_error("time_of_impact_halfspace", &r, expected_err);
+    cx.tag_answer("hs-toi", &r, |d| d.status);
     if let Ok(r) = &r {
         check_toi_value(cx, "time_of_impact_halfspace", r, case.t0, case.t1);
         if case.t1 == case.t0 && !matches!(r.status, ToiStatus::NoHit | ToiStatus::PenetratingAtStart) {

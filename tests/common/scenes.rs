@@ -1,0 +1,310 @@
+//! The rapier scenes shared by the tests, examples and benches, built in a [`World`]:
+//!
+//! * the mixed pile ([`mixed_pile`]): 150 bodies of every shape on a box with three fast CCD
+//!   shots into it, stepped on 1 to 4 workers by `tests/threads.rs` and hashed by
+//!   `tests/golden.rs`;
+//! * the box pile ([`pile_bodies`], [`insert_pile`]): 200 ellipses, rounded polygons and
+//!   `CapsuleEllipse`s dropped into a box, drawn by [`Lcg`]; `examples/pile.rs` (through
+//!   `examples/common`) and the pile benchmarks (through `benches/support`);
+//! * the wall shots ([`wall_shot`]): a fast-spinning ellipse or rounded heptagon fired with CCD at
+//!   a thin fixed wall, `tests/rapier_integration.rs` and `examples/wall_shots.rs`.
+#![allow(dead_code)]
+
+use super::rng::Lcg;
+use super::world::World;
+use rapier2d_f64::prelude::*;
+use smooth_ccd2d::{CapsuleEllipse, ConvexCurve, Ellipse, RoundedPolygon, SmoothDispatcher};
+
+// ---------------------------------------------------------------------------------------------
+// The mixed pile
+// ---------------------------------------------------------------------------------------------
+
+/// Bodies of [`mixed_pile`] besides its three shots (enough for rapier to split its narrow
+/// phase, solver and CCD sweeps between workers: more than 64 pairs, 64 swept bodies).
+pub const MIXED_PILE_BODIES: usize = 150;
+
+/// A pile of ellipses, rounded polygons and capsule-ellipses on a box, with three fast CCD
+/// ellipse shots into it (`tests/threads.rs`, `tests/golden.rs`). Returns the dynamic bodies.
+pub fn mixed_pile(world: &mut World) -> Vec<RigidBodyHandle> {
+    let mut handles = Vec::new();
+    world.insert(
+        RigidBodyBuilder::fixed().translation(Vector::new(0.0, -0.5)),
+        ColliderBuilder::cuboid(20.0, 0.5),
+    );
+    for i in 0..MIXED_PILE_BODIES {
+        let x = -9.0 + 0.9 * (i % 20) as f64;
+        let y = 1.0 + 0.9 * (i / 20) as f64;
+        let shape = match i % 4 {
+            0 => SharedShape::new(Ellipse::new(0.4, 0.18)),
+            1 => SharedShape::new(RoundedPolygon::regular(3 + i % 5, 0.3, 0.03)),
+            2 => SharedShape::new(CapsuleEllipse::new(0.1, 0.15, 0.2)),
+            _ => SharedShape::new(Ellipse::new(0.25, 0.25)),
+        };
+        let (h, _) = world.insert(
+            RigidBodyBuilder::dynamic()
+                .translation(Vector::new(x, y))
+                .rotation(0.37 * i as f64)
+                .angvel(2.0 - 0.1 * i as f64)
+                .ccd_enabled(i % 2 == 0),
+            ColliderBuilder::new(shape),
+        );
+        handles.push(h);
+    }
+    for k in 0..3 {
+        let (shot, _) = world.insert(
+            RigidBodyBuilder::dynamic()
+                .translation(Vector::new(-15.0 - 3.0 * k as f64, 1.5 + 1.2 * k as f64))
+                .linvel(Vector::new(250.0, 0.0))
+                .angvel(120.0)
+                .ccd_enabled(true),
+            ColliderBuilder::new(SharedShape::new(Ellipse::new(0.3, 0.08))),
+        );
+        handles.push(shot);
+    }
+    handles
+}
+
+// ---------------------------------------------------------------------------------------------
+// The box pile
+// ---------------------------------------------------------------------------------------------
+
+/// Bodies in the box pile.
+pub const PILE_BODIES: usize = 200;
+/// Bodies per row of the pile's starting grid.
+pub const PILE_COLUMNS: usize = 12;
+/// Inner half-width of the pile's box; the floor's top face is at y = 0.
+pub const PILE_HALF_WIDTH: f64 = 6.0;
+/// Height of the box's walls.
+pub const PILE_WALL_HEIGHT: f64 = 24.0;
+/// The seed of the pile's [`Lcg`].
+pub const PILE_SEED: u64 = 0x005e_ed2d;
+
+/// The shape of a body of the pile: body `i` is an ellipse, a rounded polygon or a
+/// `CapsuleEllipse` as `i mod 3` is 0, 1 or 2.
+#[derive(Clone, Debug)]
+pub enum PileShape {
+    Ellipse(Ellipse),
+    Polygon(RoundedPolygon),
+    Capsule(CapsuleEllipse),
+}
+
+impl PileShape {
+    /// The shape as a curve (for outlines and bounding radii).
+    pub fn curve(&self) -> &dyn ConvexCurve {
+        match self {
+            PileShape::Ellipse(e) => e,
+            PileShape::Polygon(p) => p,
+            PileShape::Capsule(c) => c,
+        }
+    }
+
+    /// The exact shape as rapier's shape.
+    pub fn shared(&self) -> SharedShape {
+        match self {
+            PileShape::Ellipse(e) => SharedShape::new(*e),
+            PileShape::Polygon(p) => SharedShape::new(p.clone()),
+            PileShape::Capsule(c) => SharedShape::new(c.clone()),
+        }
+    }
+}
+
+/// A body of the pile as it starts: its shape, position, angle and angular velocity (at rest
+/// otherwise).
+#[derive(Clone, Debug)]
+pub struct PileBody {
+    pub shape: PileShape,
+    pub translation: Vector,
+    pub rotation: f64,
+    pub angvel: f64,
+}
+
+/// The shape of body `i`; sizes span a factor of about 3 (bounding radii 0.15 to 0.45).
+fn pile_shape(i: usize, rng: &mut Lcg) -> PileShape {
+    let size = rng.range(0.15, 0.45);
+    match i % 3 {
+        0 => PileShape::Ellipse(Ellipse::new(size, size * rng.range(0.3, 1.0))),
+        1 => {
+            let sides = 3 + (rng.unit() * 6.0) as usize;
+            PileShape::Polygon(RoundedPolygon::regular(
+                sides,
+                0.85 * size,
+                0.15 * size * rng.range(0.3, 1.0),
+            ))
+        }
+        _ => {
+            let r1 = size * rng.range(0.35, 0.5);
+            PileShape::Capsule(CapsuleEllipse::new(
+                r1,
+                size * rng.range(0.1, 0.4),
+                size * rng.range(0.4, 0.7),
+            ))
+        }
+    }
+}
+
+/// The [`PILE_BODIES`] bodies of the pile (deterministic: [`Lcg`] seeded with [`PILE_SEED`]),
+/// on a grid of [`PILE_COLUMNS`] columns a metre apart in height, jittered sideways.
+pub fn pile_bodies() -> Vec<PileBody> {
+    let mut rng = Lcg::new(PILE_SEED);
+    let spacing = 2.0 * PILE_HALF_WIDTH / PILE_COLUMNS as f64;
+    (0..PILE_BODIES)
+        .map(|i| {
+            let shape = pile_shape(i, &mut rng);
+            let (row, col) = (i / PILE_COLUMNS, i % PILE_COLUMNS);
+            let x = -PILE_HALF_WIDTH + spacing * (col as f64 + 0.5) + rng.range(-0.03, 0.03);
+            let y = 1.0 + row as f64;
+            let rotation = rng.range(-3.0, 3.0);
+            let angvel = rng.range(-2.0, 2.0);
+            PileBody {
+                shape,
+                translation: Vector::new(x, y),
+                rotation,
+                angvel,
+            }
+        })
+        .collect()
+}
+
+/// The pile's box: the floor (top face at y = 0) and two walls (inner faces at
+/// x = ±[`PILE_HALF_WIDTH`]), as (centre, half-extents).
+pub fn pile_walls() -> [(Vector, Vector); 3] {
+    [
+        (Vector::new(0.0, -0.5), Vector::new(PILE_HALF_WIDTH + 1.0, 0.5)),
+        (
+            Vector::new(-PILE_HALF_WIDTH - 0.5, 0.5 * PILE_WALL_HEIGHT),
+            Vector::new(0.5, 0.5 * PILE_WALL_HEIGHT),
+        ),
+        (
+            Vector::new(PILE_HALF_WIDTH + 0.5, 0.5 * PILE_WALL_HEIGHT),
+            Vector::new(0.5, 0.5 * PILE_WALL_HEIGHT),
+        ),
+    ]
+}
+
+/// Inserts the box (fixed cuboids) and then `bodies` (dynamic, friction 0.5), each body's collider
+/// shape given by `shape_of` (the exact shape: [`PileShape::shared`]). Returns the bodies' handles,
+/// in order.
+pub fn insert_pile(
+    world: &mut World,
+    bodies: &[PileBody],
+    shape_of: impl Fn(&PileShape) -> SharedShape,
+) -> Vec<RigidBodyHandle> {
+    for (c, h) in pile_walls() {
+        world.insert(
+            RigidBodyBuilder::fixed().translation(c),
+            ColliderBuilder::cuboid(h.x, h.y),
+        );
+    }
+    bodies
+        .iter()
+        .map(|b| {
+            world
+                .insert(
+                    RigidBodyBuilder::dynamic()
+                        .translation(b.translation)
+                        .rotation(b.rotation)
+                        .angvel(b.angvel),
+                    ColliderBuilder::new(shape_of(&b.shape)).friction(0.5),
+                )
+                .0
+        })
+        .collect()
+}
+
+// ---------------------------------------------------------------------------------------------
+// Wall shots
+// ---------------------------------------------------------------------------------------------
+
+/// The shots' wall: centre x, half-thickness (0.05 thick), half-height.
+pub const WALL_X: f64 = 5.0;
+pub const WALL_HALF: f64 = 0.025;
+pub const WALL_HALF_HEIGHT: f64 = 3.0;
+/// The wall's face towards the shots (x = 4.975).
+pub const WALL_FACE: f64 = WALL_X - WALL_HALF;
+
+/// What is shot at the wall.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub enum ShotBody {
+    /// Ellipse 0.5 × 0.2.
+    Ellipse,
+    /// Rounded regular heptagon, circumradius 0.4, corner radius 0.06.
+    Heptagon,
+}
+
+/// How a shot is simulated: the shape and the narrow phase.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub enum ShotMethod {
+    /// This crate's shape, `SmoothDispatcher`.
+    Smooth,
+    /// The shape approximated by parry's convex polygon (a 32-gon inscribed in the ellipse,
+    /// `RoundConvexPolygon` for the heptagon), rapier's default narrow phase and its own sweeps.
+    Polygon,
+    /// This crate's shape, parry's `DefaultQueryDispatcher` (`NarrowPhase::new()`).
+    ParryDefault,
+}
+
+impl ShotMethod {
+    /// The narrow phase of the method.
+    pub fn narrow_phase(self) -> NarrowPhase {
+        match self {
+            ShotMethod::Smooth => NarrowPhase::with_query_dispatcher(SmoothDispatcher::default()),
+            _ => NarrowPhase::new(),
+        }
+    }
+}
+
+/// The heptagon's circumradius.
+const HEPTAGON_R: f64 = 0.4;
+
+/// The collider shape of `body` under `method`.
+pub fn shot_shape(body: ShotBody, method: ShotMethod) -> SharedShape {
+    match (body, method) {
+        (ShotBody::Ellipse, ShotMethod::Polygon) => {
+            let pts = (0..32)
+                .map(|i| {
+                    let a = std::f64::consts::TAU * i as f64 / 32.0;
+                    Vector::new(0.5 * a.cos(), 0.2 * a.sin())
+                })
+                .collect();
+            SharedShape::convex_polyline(pts).expect("a convex 32-gon")
+        }
+        (ShotBody::Ellipse, _) => SharedShape::new(Ellipse::new(0.5, 0.2)),
+        (ShotBody::Heptagon, m) => {
+            let p = RoundedPolygon::regular(7, HEPTAGON_R, 0.15 * HEPTAGON_R);
+            if m == ShotMethod::Polygon {
+                SharedShape::new(p.to_parry().expect("a heptagon"))
+            } else {
+                SharedShape::new(p)
+            }
+        }
+    }
+}
+
+/// One shot: launch speed (m/s, along +x), spin (rad/s), initial angle.
+#[derive(Clone, Copy, Debug)]
+pub struct Shot {
+    pub speed: f64,
+    pub spin: f64,
+    pub angle0: f64,
+}
+
+/// A world without gravity holding the wall and, at the origin, a body of collider `shape` launched
+/// as `shot` (CCD on, never asleep), with the narrow phase of `method`. Returns the world and the
+/// body.
+pub fn wall_shot(method: ShotMethod, shape: SharedShape, shot: Shot) -> (World, RigidBodyHandle) {
+    let mut world = World::new(method.narrow_phase());
+    world.insert(
+        RigidBodyBuilder::fixed().translation(Vector::new(WALL_X, 0.0)),
+        ColliderBuilder::cuboid(WALL_HALF, WALL_HALF_HEIGHT),
+    );
+    let (h, _) = world.insert(
+        RigidBodyBuilder::dynamic()
+            .rotation(shot.angle0)
+            .linvel(Vector::new(shot.speed, 0.0))
+            .angvel(shot.spin)
+            .ccd_enabled(true)
+            .can_sleep(false),
+        ColliderBuilder::new(shape),
+    );
+    (world, h)
+}
