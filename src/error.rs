@@ -177,6 +177,10 @@ pub enum QueryError {
     /// NaN. The crate's own constructors refuse the lengths that would do this
     /// ([`crate::MIN_LENGTH`], [`crate::MAX_LENGTH`]).
     Degenerate,
+    /// A shape the query cannot take: [`crate::shape_time_of_impact`] takes this crate's shapes
+    /// and parry's convex shapes (ball, cuboid, capsule, segment, triangle, convex polygon and
+    /// their round versions) and half-spaces, not composites or other custom shapes.
+    UnsupportedShape,
     /// The time window is reversed (`end_time < start_time`). An empty window
     /// (`start_time == end_time`) is not an error: the answer is at `start_time`,
     /// [`crate::ToiStatus::PenetratingAtStart`] or [`crate::ToiStatus::NoHit`].
@@ -190,6 +194,7 @@ impl fmt::Display for QueryError {
             QueryError::NotStrictlyConvex => "object2 must be strictly convex",
             QueryError::Degenerate => "a shape evaluated to a non-finite value",
             QueryError::EmptyWindow => "the time window is reversed",
+            QueryError::UnsupportedShape => "a shape the query cannot take",
         })
     }
 }

@@ -26,22 +26,26 @@ use std::collections::BTreeMap;
 const FUZZ_SEED: u64 = 0x0007_5EED;
 const FUZZ_CASES: u64 = 40_000;
 
-/// Digest per scenario class of the fuzz batch, recorded on the layout before issue 19's move
-/// (commit 'Golden digests ...').
+/// Digest per scenario class of the fuzz batch. Recorded before issue 19's move (which left them
+/// unchanged), re-recorded with issue 17: every nonlinear cast of a pair with no strictly convex
+/// side (and of parry's own convex pairs) is now the crate's exact time of impact instead of
+/// parry's, and the distance queries of this crate's such pairs the gap tracker's exact distance.
+/// Every class holds such pairs among its cases.
 const FUZZ_DIGESTS: [(&str, u64); 9] = [
-    ("coincident", 0xC4ACE59A8E8DD5F1),
-    ("concentric", 0x6DB60D8F4E5BAD90),
-    ("extreme-scale", 0xB238112E1CF1738A),
-    ("grazing", 0xB0A1F1147626216B),
-    ("parry-pair", 0x674E0BAE1AE42D0D),
-    ("random", 0x7C2023CEF18FB330),
-    ("thin-ellipse", 0xF94A2D3B271CD5C4),
-    ("touching-at-t0", 0x75395A6AA9B826CC),
-    ("wild", 0xF8CC341763794CAE),
+    ("coincident", 0x0BE265BD891C2E09),
+    ("concentric", 0xBCB9D3E473277FE9),
+    ("extreme-scale", 0x3C49BFA6900F5BA0),
+    ("grazing", 0xDF694D65AF3F479B),
+    ("parry-pair", 0xB20E7F2499618B7D),
+    ("random", 0xD60676371E79D0DC),
+    ("thin-ellipse", 0xB94B19056117F91C),
+    ("touching-at-t0", 0x1666C6AB1C538042),
+    ("wild", 0x132E99705C0639B9),
 ];
 
-/// Final-state hash of the rapier scene.
-const RAPIER_STATE: u64 = 0x97F3_2395_5B85_4751;
+/// Final-state hash of the rapier scene (re-recorded with issue 17: the CCD casts between its
+/// rounded polygons and capsule-ellipses are the crate's; 0x97F3_2395_5B85_4751 before).
+const RAPIER_STATE: u64 = 0x14D9_C197_0B12_3749;
 
 /// FNV-1a of a sequence of words.
 fn fnv(words: impl IntoIterator<Item = u64>) -> u64 {

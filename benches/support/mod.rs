@@ -294,5 +294,6 @@ pub fn parry_polygonal(t: &TestShape) -> Box<dyn Shape> {
             None => Box::new(polygon_approximation(p, POLYGON_VERTICES)),
         },
         TestShape::CapsuleEllipse(c) => Box::new(polygon_approximation(c, POLYGON_VERTICES)),
+        TestShape::Cuboid(h, _) => Box::new(parry2d_f64::shape::Cuboid::new(*h)),
     }
 }

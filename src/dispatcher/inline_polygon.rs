@@ -62,6 +62,21 @@ impl InlinePolygon {
         })
     }
 
+    /// The core vertices (counter-clockwise).
+    pub(crate) fn vertices(&self) -> &[Vector] {
+        &self.vertices[..self.n]
+    }
+
+    /// The outward unit normals of the edges (edge i from vertex i to i + 1).
+    pub(crate) fn edge_normals(&self) -> &[Vector] {
+        &self.edge_normals[..self.n]
+    }
+
+    /// The radius the core is dilated by.
+    pub(crate) fn radius(&self) -> f64 {
+        self.radius
+    }
+
     /// The shared piece layout over this polygon's data.
     #[inline]
     fn pieces(&self) -> PolygonPieces<'_> {

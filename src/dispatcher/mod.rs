@@ -55,6 +55,7 @@
 //! * `parry_fallback`: parry's answers made robust (nearly touching contacts, windows not at 0);
 //! * `input_guard`: what is refused before parry sees it.
 
+mod cast;
 mod composite;
 pub(crate) mod inline_polygon;
 pub(crate) mod input_guard;
@@ -64,6 +65,7 @@ mod queries;
 pub(crate) mod route;
 pub(crate) mod start_contact;
 
+pub use cast::shape_time_of_impact;
 pub use start_contact::StartContactPolicy;
 
 use crate::error::QueryError;

@@ -1,19 +1,17 @@
 //! [`SmoothDispatcher`] as parry's `QueryDispatcher`: each query routed ([`route`]) to this
 //! crate's algorithms, to a half-space query, to parry's composite helpers, or to parry.
 
+use super::cast::{toi_to_parry, NonlinearCast};
 use super::composite::{
-    composite_cast, composite_cast_nonlinear, composite_closest_points, composite_contact, composite_distance,
-    composite_intersection,
+    composite_cast, composite_closest_points, composite_contact, composite_distance, composite_intersection,
 };
 use super::input_guard;
-use super::parry_fallback::{pair_size, parry_cast_nonlinear, parry_contact};
-use super::route::{curves_toi, pair_distance, route, Route, RouteScratch};
-use super::start_contact::{parry_nonlinear_without_stop, pos12_at, rapier_rule, StartContact, StartContactPolicy};
+use super::parry_fallback::parry_contact;
+use super::route::{curves_toi, route, route_cast, Route, RouteScratch};
 use super::SmoothDispatcher;
-use crate::error::QueryError;
 use crate::numerics::math::{Pose, Real, Vector};
-use crate::query::halfspace::{halfspace_distance, time_of_impact_halfspace};
-use crate::query::toi::{bounding_circles_part, TimeOfImpact, ToiOptions};
+use crate::query::gap::gap_distance;
+use crate::query::toi::{bounding_circles_part, ToiOptions};
 use parry2d_f64::query::details::ShapeCastOptions;
 use parry2d_f64::query::{
     ClosestPoints, Contact, DefaultQueryDispatcher, NonlinearRigidMotion, QueryDispatcher, ShapeCastHit, ShapeDistance,
@@ -21,25 +19,26 @@ use parry2d_f64::query::{
 };
 use parry2d_f64::shape::Shape;
 
-fn hit_from(r: &TimeOfImpact) -> Option<ShapeCastHit> {
-    let status = r.status.to_parry()?;
-    Some(ShapeCastHit {
-        time_of_impact: r.time,
-        witness1: r.point1,
-        witness2: r.point2,
-        normal1: r.normal1,
-        normal2: r.normal2,
-        status,
-        subshape1: 0,
-        subshape2: 0,
-    })
-}
+/// The exact signed distance of a pair of this crate's shapes with no strictly convex side:
+/// (distance, witness on shape 1 and on shape 2 in their frames, shape 1's normal and shape 2's).
+type GapDistance = (Real, Vector, Vector, Vector, Vector);
 
-fn toi_to_parry(r: Result<Option<TimeOfImpact>, QueryError>) -> Result<Option<ShapeCastHit>, Unsupported> {
-    match r {
-        Ok(r) => Ok(r.as_ref().and_then(hit_from)),
-        Err(QueryError::EmptyWindow) => Ok(None),
-        Err(_) => Err(Unsupported),
+impl SmoothDispatcher {
+    /// For a pair with no strictly convex side that the gap tracker takes (polygons,
+    /// capsule-ellipses, curves with faces), its exact signed distance at `pos12` (`Some(None)`
+    /// for non-finite input); `None` for other pairs.
+    fn gap_pair_distance(pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape) -> Option<Option<GapDistance>> {
+        let mut scratch = RouteScratch::default();
+        let Route::Gap { c1, c2 } = route_cast(g1, g2, &mut scratch) else {
+            return None;
+        };
+        Some(match (c1.gap_side(), c2.gap_side()) {
+            (Some(a), Some(b)) if pos12.is_finite() => gap_distance(a, b, pos12).and_then(|(d, p1, p2, n1)| {
+                let n2 = pos12.rotation.inverse() * -n1;
+                (d.is_finite() && p1.is_finite() && p2.is_finite() && n2.is_finite()).then_some((d, p1, p2, n1, n2))
+            }),
+            _ => None,
+        })
     }
 }
 
@@ -50,7 +49,18 @@ impl QueryDispatcher for SmoothDispatcher {
         g1: &dyn Shape,
         g2: &dyn Shape,
     ) -> Result<ShapeIntersection, Unsupported> {
-        match route(g1, g2, &mut RouteScratch::default()) {
+        let mut scratch = RouteScratch::default();
+        let routed = route(g1, g2, &mut scratch);
+        if let Some(gap) = matches!(routed, Route::Parry { ours: true })
+            .then(|| Self::gap_pair_distance(pos12, g1, g2))
+            .flatten()
+        {
+            return match gap {
+                Some(d) => Ok(ShapeIntersection::new(d.0 <= 0.0)),
+                None => Err(Unsupported),
+            };
+        }
+        match routed {
             Route::Parry { .. } => input_guard::parry(pos12, g1, g2, 0.0, || {
                 DefaultQueryDispatcher.intersection_test(pos12, g1, g2)
             }),
@@ -68,7 +78,18 @@ impl QueryDispatcher for SmoothDispatcher {
     }
 
     fn distance(&self, pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape) -> Result<ShapeDistance, Unsupported> {
-        match route(g1, g2, &mut RouteScratch::default()) {
+        let mut scratch = RouteScratch::default();
+        let routed = route(g1, g2, &mut scratch);
+        if let Some(gap) = matches!(routed, Route::Parry { ours: true })
+            .then(|| Self::gap_pair_distance(pos12, g1, g2))
+            .flatten()
+        {
+            return match gap {
+                Some(d) => Ok(ShapeDistance::new(d.0.max(0.0))),
+                None => Err(Unsupported),
+            };
+        }
+        match routed {
             Route::Parry { .. } => {
                 input_guard::parry(pos12, g1, g2, 0.0, || DefaultQueryDispatcher.distance(pos12, g1, g2))
             }
@@ -91,7 +112,20 @@ impl QueryDispatcher for SmoothDispatcher {
             // parry's contract (its composite helpers assert it): no negative or NaN margin.
             return Err(Unsupported);
         }
-        match route(g1, g2, &mut RouteScratch::default()) {
+        let mut scratch = RouteScratch::default();
+        let routed = route(g1, g2, &mut scratch);
+        // The gap tracker's exact distance for pairs with no strictly convex side.
+        if let Some(gap) = matches!(routed, Route::Parry { ours: true })
+            .then(|| Self::gap_pair_distance(pos12, g1, g2))
+            .flatten()
+        {
+            return match gap {
+                Some((d, p1, p2, n1, n2)) if d <= prediction => Ok(Some(Contact::new(p1, p2, n1, n2, d))),
+                Some(_) => Ok(None),
+                None => Err(Unsupported),
+            };
+        }
+        match routed {
             // parry's, robust to nearly touching shapes (`parry_contact`).
             Route::Parry { ours: true } => {
                 input_guard::parry(pos12, g1, g2, prediction, || parry_contact(pos12, g1, g2, prediction))
@@ -128,7 +162,20 @@ impl QueryDispatcher for SmoothDispatcher {
             // parry's contract (it asserts it for balls and half-spaces): no negative or NaN margin.
             return Err(Unsupported);
         }
-        match route(g1, g2, &mut RouteScratch::default()) {
+        let mut scratch = RouteScratch::default();
+        let routed = route(g1, g2, &mut scratch);
+        if let Some(gap) = matches!(routed, Route::Parry { ours: true })
+            .then(|| Self::gap_pair_distance(pos12, g1, g2))
+            .flatten()
+        {
+            return match gap {
+                Some((d, ..)) if d <= 0.0 => Ok(ClosestPoints::Intersecting),
+                Some((d, p1, p2, ..)) if d <= max_dist => Ok(ClosestPoints::WithinMargin(p1, p2)),
+                Some(_) => Ok(ClosestPoints::Disjoint),
+                None => Err(Unsupported),
+            };
+        }
+        match routed {
             Route::Parry { .. } => input_guard::parry(pos12, g1, g2, max_dist, || {
                 DefaultQueryDispatcher.closest_points(pos12, g1, g2, max_dist)
             }),
@@ -195,113 +242,15 @@ impl QueryDispatcher for SmoothDispatcher {
         end_time: Real,
         stop_at_penetration: bool,
     ) -> Result<Option<ShapeCastHit>, Unsupported> {
-        let opts = ToiOptions {
-            stop_at_penetration,
-            ..self.toi_options
+        let cast = NonlinearCast {
+            m1: motion1,
+            g1,
+            m2: motion2,
+            g2,
+            t0: start_time,
+            t1: end_time,
+            stop: stop_at_penetration,
         };
-        match route(g1, g2, &mut RouteScratch::default()) {
-            Route::Curves { c1, c2, swapped } => {
-                let (a, b) = if swapped { (&c2, &c1) } else { (&c1, &c2) };
-                // The specification's inexpensive test first: circles that never meet, no impact
-                // (and no contact at the start for the rapier rule below).
-                if bounding_circles_part(
-                    a.get(),
-                    motion1,
-                    b.get(),
-                    motion2,
-                    start_time,
-                    end_time,
-                    opts.target_distance,
-                ) {
-                    return Ok(None);
-                }
-                let thickness = g1.ccd_thickness().min(g2.ccd_thickness());
-                let r = curves_toi(a, motion1, b, motion2, start_time, end_time, &opts);
-                if stop_at_penetration || self.start_contact == StartContactPolicy::Plain {
-                    return toi_to_parry(r.map(Some));
-                }
-                let dopts = &self.distance_options;
-                let at = |t: Real| pair_distance(&c1, &c2, swapped, &pos12_at(motion1, motion2, t), dopts).ok();
-                let gap = StartContactPolicy::START_CONTACT_GAP * pair_size(g1, g2);
-                toi_to_parry(r.map(|r| {
-                    rapier_rule(
-                        r,
-                        motion1,
-                        motion2,
-                        start_time,
-                        end_time,
-                        thickness,
-                        gap,
-                        || {
-                            let pos12 = pos12_at(motion1, motion2, start_time);
-                            if Self::far_apart(&pos12, g1, g2, gap) {
-                                return None;
-                            }
-                            pair_distance(&c1, &c2, swapped, &pos12, dopts)
-                                .ok()
-                                .map(|d| StartContact::from_distance(&d))
-                        },
-                        |t| at(t).map(|d| d.distance),
-                    )
-                }))
-            }
-            Route::HalfSpace { curve, hs, curve_first } => {
-                let r = if curve_first {
-                    time_of_impact_halfspace(curve.get(), motion1, hs, motion2, start_time, end_time, &opts)
-                } else {
-                    time_of_impact_halfspace(curve.get(), motion2, hs, motion1, start_time, end_time, &opts)
-                        .map(TimeOfImpact::swapped)
-                };
-                let thickness = if curve_first {
-                    g1.ccd_thickness()
-                } else {
-                    g2.ccd_thickness()
-                };
-                if stop_at_penetration || self.start_contact == StartContactPolicy::Plain {
-                    return toi_to_parry(r.map(Some));
-                }
-                let at =
-                    |t: Real| halfspace_distance(curve.get(), hs, &pos12_at(motion1, motion2, t), curve_first).ok();
-                let gap = StartContactPolicy::START_CONTACT_GAP * pair_size(g1, g2);
-                toi_to_parry(r.map(|r| {
-                    rapier_rule(
-                        r,
-                        motion1,
-                        motion2,
-                        start_time,
-                        end_time,
-                        thickness,
-                        gap,
-                        || at(start_time).map(|d| StartContact::from_distance(&d)),
-                        |t| at(t).map(|d| d.distance),
-                    )
-                }))
-            }
-            // parry's composite helper casts bounding balls itself: the same guards as parry's casts.
-            Route::Composite => match input_guard::cast_window_ok(motion1, g1, motion2, g2, start_time, end_time) {
-                Ok(true) => input_guard::finite(composite_cast_nonlinear(
-                    self,
-                    motion1,
-                    g1,
-                    motion2,
-                    g2,
-                    start_time,
-                    end_time,
-                    stop_at_penetration,
-                )),
-                Ok(false) => Ok(None),
-                Err(e) => Err(e),
-            },
-            Route::Parry { ours: true }
-                if !stop_at_penetration && self.start_contact == StartContactPolicy::RapierAllowance =>
-            {
-                input_guard::finite(parry_nonlinear_without_stop(
-                    motion1, g1, motion2, g2, start_time, end_time,
-                ))
-            }
-            Route::Parry { .. } => {
-                parry_cast_nonlinear(motion1, g1, motion2, g2, start_time, end_time, stop_at_penetration)
-            }
-        }
+        self.nonlinear_cast(&cast)
     }
 }

@@ -6,6 +6,7 @@ use super::inline_polygon::InlinePolygon;
 use crate::curve::ConvexCurve;
 use crate::error::QueryError;
 use crate::numerics::math::{cross, Pose, Real, Vector};
+use crate::query::gap::{CurveSide, PolySide, Side};
 use crate::query::stationary::{stationary_distance, DistanceOptions, StationaryDistance};
 use crate::query::toi::{time_of_impact, TimeOfImpact, ToiOptions};
 use crate::{BallCurve, CapsuleEllipse, CustomCurve, Ellipse, RoundedPolygon};
@@ -31,6 +32,11 @@ pub(crate) enum CurveOf<'a> {
     /// A parry polygon built in the caller's [`RouteScratch`].
     Inline(&'a InlinePolygon),
     Poly(RoundedPolygon),
+    /// This crate's [`RoundedPolygon`], [`CapsuleEllipse`] and [`CustomCurve`], kept by type for
+    /// the time of impact of pairs with no strictly convex side (their faces).
+    Rounded(&'a RoundedPolygon),
+    Capsule(&'a CapsuleEllipse),
+    Custom(&'a CustomCurve),
 }
 
 /// Stack room for the polygons [`route`] builds from parry shapes, one per side. A query declares
@@ -51,6 +57,29 @@ impl CurveOf<'_> {
             CurveOf::Ball(b) => b,
             CurveOf::Inline(p) => *p,
             CurveOf::Poly(p) => p,
+            CurveOf::Rounded(p) => *p,
+            CurveOf::Capsule(c) => *c,
+            CurveOf::Custom(c) => c.curve(),
+        }
+    }
+
+    /// The curve as a side of the gap tracker (a dilated polygon, or a curve with its faces);
+    /// `None` for a curve the dispatcher only knows as a trait object.
+    pub(crate) fn gap_side(&self) -> Option<Side<'_>> {
+        let poly = |v, n, r| PolySide::new(v, n, r).map(Side::Poly);
+        match self {
+            CurveOf::Inline(p) => poly(p.vertices(), p.edge_normals(), p.radius()),
+            CurveOf::Poly(p) => poly(p.vertices(), p.edge_normals(), p.corner_radius()),
+            CurveOf::Rounded(p) => poly(p.vertices(), p.edge_normals(), p.corner_radius()),
+            CurveOf::Capsule(c) => Some(Side::Curve(CurveSide {
+                curve: *c,
+                faces: c.flats(),
+            })),
+            CurveOf::Custom(c) => Some(Side::Curve(CurveSide {
+                curve: c.curve(),
+                faces: c.flats(),
+            })),
+            CurveOf::Ellipse(_) | CurveOf::Ball(_) | CurveOf::Borrowed(_) => None,
         }
     }
 }
@@ -92,7 +121,8 @@ fn ccw_triangle(mut v: [Vector; 3]) -> Option<[Vector; 3]> {
 
 /// The curve of a polygonal core dilated by `radius`: on the stack when it fits.
 fn polygon_curve<'a>(verts: &[Vector], radius: f64, slot: &'a mut Option<InlinePolygon>) -> Option<CurveOf<'a>> {
-    if verts.len() < 2 || !verts.iter().all(|v| v.is_finite()) || !radius.is_finite() {
+    // A negative or non-finite radius is not a shape (parry's guards refuse it).
+    if verts.len() < 2 || !verts.iter().all(|v| v.is_finite()) || !(radius.is_finite() && radius >= 0.0) {
         return None;
     }
     Some(match InlinePolygon::from_core_unchecked(verts, radius) {
@@ -106,14 +136,23 @@ pub(crate) fn curve_of<'a>(s: &'a dyn Shape, slot: &'a mut Option<InlinePolygon>
     match s.shape_type() {
         // An ellipse or a disc as `route`'s fast path takes them, then this crate's other shapes.
         ShapeType::Custom | ShapeType::Ball => {
-            return ellipse_or_ball(s).or_else(|| own_curve(s).map(CurveOf::Borrowed));
+            return ellipse_or_ball(s)
+                .or_else(|| s.as_shape::<RoundedPolygon>().map(CurveOf::Rounded))
+                .or_else(|| s.as_shape::<CapsuleEllipse>().map(CurveOf::Capsule))
+                .or_else(|| s.as_shape::<CustomCurve>().map(CurveOf::Custom))
+                .or_else(|| own_curve(s).map(CurveOf::Borrowed));
         }
         _ => {}
     }
+    // A box with a half-extent that is not positive is not one (its vertices would turn clockwise).
+    let box_ok = |c: &Cuboid| c.half_extents.x > 0.0 && c.half_extents.y > 0.0;
     if let Some(c) = s.as_shape::<Cuboid>() {
-        polygon_curve(&box_vertices(c), 0.0, slot)
+        box_ok(c).then(|| polygon_curve(&box_vertices(c), 0.0, slot)).flatten()
     } else if let Some(c) = s.as_shape::<RoundCuboid>() {
-        polygon_curve(&box_vertices(&c.inner_shape), c.border_radius, slot)
+        let inner = &c.inner_shape;
+        box_ok(inner)
+            .then(|| polygon_curve(&box_vertices(inner), c.border_radius, slot))
+            .flatten()
     } else if let Some(c) = s.as_shape::<Capsule>() {
         if (c.segment.b - c.segment.a).length() <= CAPSULE_AS_BALL * c.radius {
             return Some(CurveOf::Ball(BallCurve { radius: c.radius })).filter(|_| c.segment.a == Vector::ZERO);
@@ -207,6 +246,9 @@ pub(crate) enum Route<'a> {
         hs: &'a HalfSpace,
         curve_first: bool,
     },
+    /// No strictly convex side (polygons, capsule-ellipses, curves with faces), in the caller's
+    /// order: the gap tracker (nonlinear casts only, [`route_cast`]).
+    Gap { c1: CurveOf<'a>, c2: CurveOf<'a> },
     /// Composite on one side: parry's helpers with this dispatcher.
     Composite,
     /// parry's default dispatcher; `ours` when one side is this crate's shape (the pair has no
@@ -268,13 +310,30 @@ pub(crate) fn route<'a>(g1: &'a dyn Shape, g2: &'a dyn Shape, scratch: &'a mut R
 /// [`route`] without its fast path (every pair; the fast path's answers are these, pinned by
 /// `route_fast_path_agrees_with_the_general_route`).
 pub(crate) fn route_general<'a>(g1: &'a dyn Shape, g2: &'a dyn Shape, scratch: &'a mut RouteScratch) -> Route<'a> {
+    route_for(g1, g2, scratch, false)
+}
+
+/// How a nonlinear cast of the pair is answered: as [`route`], and also every pair of convex
+/// shapes the dispatcher can convert — parry's own pairs and this crate's — with polygon pairs
+/// (no strictly convex side) as [`Route::Gap`] and half-spaces with the crate's exact cast.
+pub(crate) fn route_cast<'a>(g1: &'a dyn Shape, g2: &'a dyn Shape, scratch: &'a mut RouteScratch) -> Route<'a> {
+    if let (Some(c1), Some(c2)) = (ellipse_or_ball(g1), ellipse_or_ball(g2)) {
+        if matches!(c1, CurveOf::Ellipse(_)) || matches!(c2, CurveOf::Ellipse(_)) {
+            return Route::Curves { c1, c2, swapped: false };
+        }
+    }
+    route_for(g1, g2, scratch, true)
+}
+
+/// [`route_general`], or [`route_cast`] when `cast`.
+fn route_for<'a>(g1: &'a dyn Shape, g2: &'a dyn Shape, scratch: &'a mut RouteScratch, cast: bool) -> Route<'a> {
     let RouteScratch { first, second } = scratch;
     let ours = own_curve(g1).is_some() || own_curve(g2).is_some();
-    if !ours {
+    if !ours && !cast {
         return Route::Parry { ours: false };
     }
     if g1.as_composite_shape().is_some() || g2.as_composite_shape().is_some() {
-        return Route::Composite;
+        return if ours { Route::Composite } else { Route::Parry { ours } };
     }
     if let Some(hs) = half_space(g2) {
         return match curve_of(g1, first) {
@@ -306,6 +365,8 @@ pub(crate) fn route_general<'a>(g1: &'a dyn Shape, g2: &'a dyn Shape, scratch: &
                     c2: c1,
                     swapped: true,
                 }
+            } else if cast && c1.gap_side().is_some() && c2.gap_side().is_some() {
+                Route::Gap { c1, c2 }
             } else {
                 Route::Parry { ours }
             }
@@ -404,12 +465,14 @@ mod tests {
                 let d = |c: &CurveOf| match c {
                     CurveOf::Ellipse(e) => format!("ellipse {} {}", e.half_x(), e.half_y()),
                     CurveOf::Ball(b) => format!("ball {}", b.radius),
-                    CurveOf::Inline(_) | CurveOf::Poly(_) => "polygon".to_string(),
+                    CurveOf::Inline(_) | CurveOf::Poly(_) | CurveOf::Rounded(_) => "polygon".to_string(),
+                    CurveOf::Capsule(_) | CurveOf::Custom(_) => "curve".to_string(),
                     CurveOf::Borrowed(_) => "borrowed".to_string(),
                 };
                 format!("curves {} / {} swapped {swapped}", d(&c1), d(&c2))
             }
             Route::HalfSpace { .. } => "half-space".to_string(),
+            Route::Gap { .. } => "gap".to_string(),
             Route::Composite => "composite".to_string(),
             Route::Parry { ours } => format!("parry {ours}"),
         };

@@ -138,10 +138,10 @@ pub(crate) fn deepening_time(
 /// frame and shape 1's normal.
 #[derive(Clone, Copy)]
 pub(crate) struct StartContact {
-    distance: Real,
-    point1: Vector,
-    point2: Vector,
-    normal1: Vector,
+    pub(crate) distance: Real,
+    pub(crate) point1: Vector,
+    pub(crate) point2: Vector,
+    pub(crate) normal1: Vector,
 }
 
 impl StartContact {

@@ -123,7 +123,7 @@ pub struct RelativeMotion {
 /// The unit complex number of a rotation (normalised: parry's rotations are unit up to rounding,
 /// or not at all when built unchecked).
 #[inline]
-fn unit_cs(r: &parry2d_f64::math::Rotation) -> (f64, f64) {
+pub(crate) fn unit_cs(r: &parry2d_f64::math::Rotation) -> (f64, f64) {
     let (c, s) = (r.cos(), r.sin());
     let n = (c * c + s * s).sqrt();
     if n > 0.0 && n.is_finite() {
@@ -135,7 +135,7 @@ fn unit_cs(r: &parry2d_f64::math::Rotation) -> (f64, f64) {
 
 /// The product of two unit complex numbers (cos, sin): the rotation by the sum of the angles.
 #[inline]
-fn compose(a: (f64, f64), b: (f64, f64)) -> (f64, f64) {
+pub(crate) fn compose(a: (f64, f64), b: (f64, f64)) -> (f64, f64) {
     (a.0 * b.0 - a.1 * b.1, a.1 * b.0 + a.0 * b.1)
 }
 

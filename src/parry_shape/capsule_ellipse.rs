@@ -7,7 +7,6 @@ use super::mass::{capsule_ellipse_moments, mass_from_moments};
 use super::projection::{project_on_curve, project_on_curve_with_feature};
 use super::ray::piecewise_ray;
 use super::{aabb_ccd_thickness, curve_aabb};
-use crate::curve::pieces::FlatPiece;
 use crate::curve::ConvexCurve;
 use crate::numerics::math::unit_or_x;
 use crate::numerics::math::{Real, Vector};
@@ -18,19 +17,6 @@ use parry2d_f64::mass_properties::MassProperties;
 use parry2d_f64::query::{PointProjection, PointQuery, Ray, RayCast, RayIntersection};
 use parry2d_f64::shape::{FeatureId, PolygonalFeature, PolygonalFeatureMap, Shape, ShapeType, SupportMap, TypedShape};
 
-impl CapsuleEllipse {
-    fn flat_piece(&self) -> FlatPiece {
-        let (r1, r2, _) = self.params();
-        FlatPiece {
-            normal: Vector::X,
-            start: Vector::new(r1, -r2),
-            end: Vector::new(r1, r2),
-            // Pieces: 0 = lower arc, 1 = segment, 2 = upper arc, 3 = half ellipse (wrapping).
-            index: 1,
-        }
-    }
-}
-
 impl SupportMap for CapsuleEllipse {
     #[inline]
     fn local_support_point(&self, dir: Vector) -> Vector {
@@ -40,7 +26,7 @@ impl SupportMap for CapsuleEllipse {
 
 impl PolygonalFeatureMap for CapsuleEllipse {
     fn local_support_feature(&self, dir: Vector, out_feature: &mut PolygonalFeature) {
-        curve_feature(self, &[self.flat_piece()], dir, out_feature);
+        curve_feature(self, self.flats(), dir, out_feature);
     }
 }
 

@@ -2,6 +2,7 @@
 //! solver of distanceSide (`solver`), the stationary distance, the time of impact, and both
 //! against a half-space.
 
+pub(crate) mod gap;
 pub(crate) mod halfspace;
 pub(crate) mod pair;
 pub(crate) mod solver;

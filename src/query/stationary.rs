@@ -382,7 +382,7 @@ fn consider(best: &mut Option<(f64, PairPoint)>, phi: f64, j: &PairPoint) {
 /// Exact maximum over x ∈ [0, δ] of min(fa + ga·x + m x²/2, fb − gb·(δ − x) + m (δ − x)²/2).
 /// The two parabolas share their quadratic coefficient, so their difference is linear and
 /// they cross at most once; each is convex, so the envelope's maximum is at 0, δ or the crossing.
-fn envelope_max(fa: f64, ga: f64, fb: f64, gb: f64, m: f64, delta: f64) -> f64 {
+pub(crate) fn envelope_max(fa: f64, ga: f64, fb: f64, gb: f64, m: f64, delta: f64) -> f64 {
     let f1 = |x: f64| fa + ga * x + 0.5 * m * x * x;
     let f2 = |x: f64| fb - gb * (delta - x) + 0.5 * m * (delta - x) * (delta - x);
     let env = |x: f64| f1(x).min(f2(x));

@@ -10,6 +10,7 @@
 //! derivatives jump at ±arctan(r2/r1) and ±π/2. They are computed by forward automatic
 //! differentiation ([`crate::numerics::jet::Dual2`]).
 
+use crate::curve::pieces::FlatPiece;
 use crate::curve::{ConvexCurve, CurvePoint};
 use crate::error::{positive, ShapeError};
 use crate::numerics::angle::wrap_phi;
@@ -26,6 +27,8 @@ pub struct CapsuleEllipse {
     r2: f64,
     r3: f64,
     breakpoints: [f64; 4],
+    /// The segment x = r1, its one flat piece.
+    flat: [FlatPiece; 1],
 }
 
 impl TryFrom<[f64; 3]> for CapsuleEllipse {
@@ -76,12 +79,24 @@ impl CapsuleEllipse {
             r2,
             r3,
             breakpoints: [-FRAC_PI_2, -a, a, FRAC_PI_2],
+            flat: [FlatPiece {
+                normal: Vector::X,
+                start: Vector::new(r1, -r2),
+                end: Vector::new(r1, r2),
+                // Pieces: 0 = lower arc, 1 = segment, 2 = upper arc, 3 = half ellipse (wrapping).
+                index: 1,
+            }],
         })
     }
 
     /// The parameters (r1, r2, r3).
     pub fn params(&self) -> (f64, f64, f64) {
         (self.r1, self.r2, self.r3)
+    }
+
+    /// The flat pieces: the segment.
+    pub(crate) fn flats(&self) -> &[FlatPiece] {
+        &self.flat
     }
 
     /// arctan(r2/r1): where the segment meets the arcs.

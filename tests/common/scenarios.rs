@@ -17,7 +17,7 @@ use super::rng::Rng;
 use core::f64::consts::{PI, TAU};
 use parry2d_f64::math::{Pose, Vector};
 use parry2d_f64::query::NonlinearRigidMotion;
-use parry2d_f64::shape::{Ball, Shape};
+use parry2d_f64::shape::{Ball, Cuboid, Shape};
 use smooth_ccd2d::{BallCurve, CapsuleEllipse, ConvexCurve, Ellipse, RoundedPolygon};
 
 /// A shape of a scenario, concrete so that tests can wrap it in whatever parry shape they need.
@@ -31,6 +31,8 @@ pub enum TestShape {
     RoundedPolygon(RoundedPolygon),
     /// The specification's Appendix A shape.
     CapsuleEllipse(CapsuleEllipse),
+    /// parry's `Cuboid` with these half-extents (as a curve: the sharp box it is).
+    Cuboid(Vector, RoundedPolygon),
 }
 
 impl TestShape {
@@ -41,15 +43,17 @@ impl TestShape {
             TestShape::Ball(s) => s,
             TestShape::RoundedPolygon(s) => s,
             TestShape::CapsuleEllipse(s) => s,
+            TestShape::Cuboid(_, s) => s,
         }
     }
-    /// The shape as a parry shape (a disc as parry's `Ball`).
+    /// The shape as a parry shape (a disc as parry's `Ball`, a box as parry's `Cuboid`).
     pub fn parry_shape(&self) -> Box<dyn Shape> {
         match self {
             TestShape::Ellipse(e) => Box::new(*e),
             TestShape::Ball(b) => Box::new(Ball::new(b.radius)),
             TestShape::RoundedPolygon(p) => Box::new(p.clone()),
             TestShape::CapsuleEllipse(c) => Box::new(c.clone()),
+            TestShape::Cuboid(h, _) => Box::new(Cuboid::new(*h)),
         }
     }
     /// A short description (type and parameters).
@@ -65,6 +69,7 @@ impl TestShape {
                 )
             }
             TestShape::CapsuleEllipse(c) => format!("CapsuleEllipse{:?}", c.params()),
+            TestShape::Cuboid(h, _) => format!("Cuboid({:e}, {:e})", h.x, h.y),
         }
     }
 }
@@ -84,11 +89,33 @@ pub enum ScenarioClass {
     CapsuleEllipseEllipse,
     /// Sharp polygon (corner radius 0) – ellipse.
     SharpPolygonEllipse,
+    /// Polygon – polygon, each rounded or sharp (radius 0 on either side): no strictly convex
+    /// side.
+    PolygonPolygon,
+    /// Polygon (rounded or sharp) – parry `Cuboid`.
+    PolygonCuboid,
+    /// Appendix A's `CapsuleEllipse` – polygon (rounded or sharp; a `Cuboid` one time in four).
+    CapsuleEllipsePolygon,
+    /// parry `Cuboid` – `Cuboid` (parry's rotating-box misses, its issue #317).
+    CuboidCuboid,
 }
 
 impl ScenarioClass {
     /// Every class.
-    pub const ALL: [ScenarioClass; 6] = [
+    pub const ALL: [ScenarioClass; 10] = [
+        ScenarioClass::EllipseEllipse,
+        ScenarioClass::EllipseBall,
+        ScenarioClass::RoundedPolygonEllipse,
+        ScenarioClass::EllipseRoundedPolygon,
+        ScenarioClass::CapsuleEllipseEllipse,
+        ScenarioClass::SharpPolygonEllipse,
+        ScenarioClass::PolygonPolygon,
+        ScenarioClass::PolygonCuboid,
+        ScenarioClass::CapsuleEllipsePolygon,
+        ScenarioClass::CuboidCuboid,
+    ];
+    /// The classes with a strictly convex side (the φ–t tracker's; `time_of_impact` takes them).
+    pub const STRICTLY_CONVEX: [ScenarioClass; 6] = [
         ScenarioClass::EllipseEllipse,
         ScenarioClass::EllipseBall,
         ScenarioClass::RoundedPolygonEllipse,
@@ -105,6 +132,10 @@ impl ScenarioClass {
             ScenarioClass::EllipseRoundedPolygon => "ellipse-rounded_polygon",
             ScenarioClass::CapsuleEllipseEllipse => "capsule_ellipse-ellipse",
             ScenarioClass::SharpPolygonEllipse => "sharp_polygon-ellipse",
+            ScenarioClass::PolygonPolygon => "polygon-polygon",
+            ScenarioClass::PolygonCuboid => "polygon-cuboid",
+            ScenarioClass::CapsuleEllipsePolygon => "capsule_ellipse-polygon",
+            ScenarioClass::CuboidCuboid => "cuboid-cuboid",
         }
     }
     fn salt(self) -> u64 {
@@ -299,7 +330,63 @@ fn capsule_ellipse(rng: &mut Rng, s: f64) -> TestShape {
     TestShape::CapsuleEllipse(CapsuleEllipse::new(s * r1, s * r2, s * r3))
 }
 
+/// A parry `Cuboid` of size about `s`, aspect ratio 1 to 1:20.
+fn cuboid(rng: &mut Rng, s: f64) -> TestShape {
+    let a = s * rng.uniform(0.5, 1.0);
+    let b = a * rng.log_uniform(0.05, 1.0);
+    let h = if rng.chance(0.5) {
+        Vector::new(a, b)
+    } else {
+        Vector::new(b, a)
+    };
+    let curve = RoundedPolygon::new(
+        &[
+            Vector::new(-h.x, -h.y),
+            Vector::new(h.x, -h.y),
+            Vector::new(h.x, h.y),
+            Vector::new(-h.x, h.y),
+        ],
+        0.0,
+    );
+    TestShape::Cuboid(h, curve)
+}
+
+/// The shapes of the classes with no strictly convex side.
+fn faceted_shapes(class: ScenarioClass, rng: &mut Rng, s: f64, s2: f64) -> (TestShape, TestShape) {
+    match class {
+        ScenarioClass::PolygonPolygon => {
+            let rounded1 = rng.chance(0.5);
+            let first = polygon(rng, s, rounded1);
+            let rounded2 = rng.chance(0.5);
+            (first, polygon(rng, s2, rounded2))
+        }
+        ScenarioClass::PolygonCuboid => {
+            let rounded = rng.chance(0.5);
+            let first = polygon(rng, s, rounded);
+            (first, cuboid(rng, s2))
+        }
+        ScenarioClass::CapsuleEllipsePolygon => {
+            let first = capsule_ellipse(rng, s);
+            let second = if rng.chance(0.25) {
+                cuboid(rng, s2)
+            } else {
+                let rounded = rng.chance(0.5);
+                polygon(rng, s2, rounded)
+            };
+            (first, second)
+        }
+        _ => {
+            let first = cuboid(rng, s);
+            (first, cuboid(rng, s2))
+        }
+    }
+}
+
 fn shapes(class: ScenarioClass, rng: &mut Rng, s: f64) -> (TestShape, TestShape) {
+    if !ScenarioClass::STRICTLY_CONVEX.contains(&class) {
+        let s2 = s * rng.uniform(0.3, 1.0);
+        return faceted_shapes(class, rng, s, s2);
+    }
     let first = match class {
         ScenarioClass::EllipseEllipse | ScenarioClass::EllipseBall | ScenarioClass::EllipseRoundedPolygon => {
             ellipse(rng, s)
@@ -307,6 +394,7 @@ fn shapes(class: ScenarioClass, rng: &mut Rng, s: f64) -> (TestShape, TestShape)
         ScenarioClass::RoundedPolygonEllipse => polygon(rng, s, true),
         ScenarioClass::CapsuleEllipseEllipse => capsule_ellipse(rng, s),
         ScenarioClass::SharpPolygonEllipse => polygon(rng, s, false),
+        _ => unreachable!("classes with a strictly convex side"),
     };
     let s2 = match class {
         ScenarioClass::EllipseBall => s * rng.uniform(0.05, 1.0),

@@ -14,7 +14,7 @@ const CIRCLES_MARGIN: f64 = 1e-12;
 /// in its shape's local frame) come within `target` of each other: the two radii (bounding radius
 /// plus the centre's offset from the local origin) plus the target.
 #[inline]
-pub(super) fn circles_reach(radius1: f64, c1: Vector, radius2: f64, c2: Vector, target: f64) -> f64 {
+pub(crate) fn circles_reach(radius1: f64, c1: Vector, radius2: f64, c2: Vector, target: f64) -> f64 {
     radius1 + c1.length() + radius2 + c2.length() + target
 }
 
@@ -23,7 +23,7 @@ pub(super) fn circles_reach(radius1: f64, c1: Vector, radius2: f64, c2: Vector, 
 /// for a time `span`: min over s ∈ [0, span] of |offset + velocity·s| > reach (with a relative
 /// margin of 1e-12 against rounding). False for NaN input.
 #[inline]
-pub(super) fn circles_stay_apart(offset: Vector, velocity: Vector, span: f64, reach: f64) -> bool {
+pub(crate) fn circles_stay_apart(offset: Vector, velocity: Vector, span: f64, reach: f64) -> bool {
     let vv = velocity.length_squared();
     let s = if vv > 0.0 {
         (-offset.dot(velocity) / vv).clamp(0.0, span.max(0.0))

@@ -91,7 +91,7 @@
 // The negated comparisons (`!(x > 0.0)`) are deliberate: they are true for NaN.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-mod circles;
+pub(crate) mod circles;
 mod corrector;
 mod endgame;
 mod guard;

@@ -1,0 +1,277 @@
+//! `SmoothDispatcher::cast_shapes_nonlinear`: every pair of convex shapes the dispatcher can
+//! convert gets the crate's exact time of impact ([`route_cast`]) — the φ–t tracker when one side
+//! is strictly convex, the gap tracker otherwise, the half-space cast — with the
+//! [`StartContactPolicy`] applied for `stop_at_penetration = false`; composites are decomposed
+//! with this dispatcher inside, and the shapes it cannot convert go to parry.
+
+use super::composite::composite_cast_nonlinear;
+use super::input_guard;
+use super::parry_fallback::{pair_size, parry_cast_nonlinear};
+use super::route::{curves_toi, pair_distance, route_cast, CurveOf, Route, RouteScratch};
+use super::start_contact::{parry_nonlinear_without_stop, pos12_at, rapier_rule, StartContact, StartContactPolicy};
+use super::SmoothDispatcher;
+use crate::error::QueryError;
+use crate::numerics::math::Real;
+use crate::query::gap::{gap_distance, gap_time_of_impact};
+use crate::query::halfspace::{halfspace_distance, time_of_impact_halfspace};
+use crate::query::toi::{bounding_circles_part, TimeOfImpact, ToiOptions};
+use parry2d_f64::query::{NonlinearRigidMotion, ShapeCastHit, Unsupported};
+use parry2d_f64::shape::{HalfSpace, Shape};
+
+/// The arguments of one nonlinear cast.
+pub(crate) struct NonlinearCast<'a> {
+    pub m1: &'a NonlinearRigidMotion,
+    pub g1: &'a dyn Shape,
+    pub m2: &'a NonlinearRigidMotion,
+    pub g2: &'a dyn Shape,
+    pub t0: Real,
+    pub t1: Real,
+    pub stop: bool,
+}
+
+/// parry's hit for this crate's answer.
+fn hit_from(r: &TimeOfImpact) -> Option<ShapeCastHit> {
+    let status = r.status.to_parry()?;
+    Some(ShapeCastHit {
+        time_of_impact: r.time,
+        witness1: r.point1,
+        witness2: r.point2,
+        normal1: r.normal1,
+        normal2: r.normal2,
+        status,
+        subshape1: 0,
+        subshape2: 0,
+    })
+}
+
+/// parry's answer for this crate's result (a reversed window: no hit; other errors:
+/// `Unsupported`).
+pub(crate) fn toi_to_parry(r: Result<Option<TimeOfImpact>, QueryError>) -> Result<Option<ShapeCastHit>, Unsupported> {
+    match r {
+        Ok(r) => Ok(r.as_ref().and_then(hit_from)),
+        Err(QueryError::EmptyWindow) => Ok(None),
+        Err(_) => Err(Unsupported),
+    }
+}
+
+/// The time of impact of the parry shape `shape1` moving by `motion1` and `shape2` moving by
+/// `motion2` in `[start_time, end_time]`, for every pair of convex shapes the crate can take —
+/// its own shapes and parry's `Ball`, `Cuboid`, `Capsule`, `Segment`, `Triangle`,
+/// `ConvexPolygon` and their round versions, strictly convex or not — and a half-space: the
+/// φ–t tracker of [`crate::time_of_impact`] when one side is strictly convex, the gap tracker
+/// when neither is (two polygons, a capsule-ellipse against a box, …; docs/theory.md), the
+/// half-space cast. The semantics, statuses and cost counters are those of
+/// [`crate::time_of_impact`] (no rapier rule: that is [`SmoothDispatcher`]'s
+/// `cast_shapes_nonlinear`); the result is in the caller's order, each witness in its shape's
+/// frame.
+///
+/// ```
+/// use parry2d_f64::math::{Pose, Vector};
+/// use parry2d_f64::query::NonlinearRigidMotion;
+/// use parry2d_f64::shape::Cuboid;
+/// use smooth_ccd2d::{shape_time_of_impact, RoundedPolygon, ToiOptions, ToiStatus};
+///
+/// // A rounded heptagon spinning at 30 rad/s flying at a box: neither side is strictly convex.
+/// let hept = RoundedPolygon::regular(7, 0.5, 0.05);
+/// let wall = Cuboid::new(Vector::new(0.05, 2.0));
+/// let m1 = NonlinearRigidMotion::new(Pose::translation(-2.0, 0.0), Vector::ZERO, Vector::new(10.0, 0.0), 30.0);
+/// let m2 = NonlinearRigidMotion::identity();
+/// let r = shape_time_of_impact(&hept, &m1, &wall, &m2, 0.0, 1.0, &ToiOptions::default()).unwrap();
+/// assert_eq!(r.status, ToiStatus::Hit);
+/// assert!(r.time > 0.13 && r.time < 0.15);
+/// ```
+///
+/// # Errors
+/// [`QueryError::UnsupportedShape`] for a shape it cannot take (composites, other custom
+/// shapes); otherwise as [`crate::time_of_impact`].
+pub fn shape_time_of_impact(
+    shape1: &dyn Shape,
+    motion1: &NonlinearRigidMotion,
+    shape2: &dyn Shape,
+    motion2: &NonlinearRigidMotion,
+    start_time: Real,
+    end_time: Real,
+    options: &ToiOptions,
+) -> Result<TimeOfImpact, QueryError> {
+    let (m1, m2, t0, t1) = (motion1, motion2, start_time, end_time);
+    match route_cast(shape1, shape2, &mut RouteScratch::default()) {
+        Route::Curves { c1, c2, swapped } => {
+            let (a, b) = if swapped { (&c2, &c1) } else { (&c1, &c2) };
+            curves_toi(a, m1, b, m2, t0, t1, options)
+        }
+        Route::Gap { c1, c2 } => match (c1.gap_side(), c2.gap_side()) {
+            (Some(p1), Some(p2)) => gap_time_of_impact(p1, m1, p2, m2, t0, t1, options),
+            _ => Err(QueryError::UnsupportedShape),
+        },
+        Route::HalfSpace {
+            curve,
+            hs,
+            curve_first: true,
+        } => time_of_impact_halfspace(curve.get(), m1, hs, m2, t0, t1, options),
+        Route::HalfSpace { curve, hs, .. } => {
+            time_of_impact_halfspace(curve.get(), m2, hs, m1, t0, t1, options).map(TimeOfImpact::swapped)
+        }
+        Route::Composite | Route::Parry { .. } => Err(QueryError::UnsupportedShape),
+    }
+}
+
+impl SmoothDispatcher {
+    /// The nonlinear cast (module docs).
+    pub(crate) fn nonlinear_cast(&self, c: &NonlinearCast) -> Result<Option<ShapeCastHit>, Unsupported> {
+        let opts = ToiOptions {
+            stop_at_penetration: c.stop,
+            ..self.toi_options
+        };
+        match route_cast(c.g1, c.g2, &mut RouteScratch::default()) {
+            Route::Curves { c1, c2, swapped } => self.cast_curves(c, &c1, &c2, swapped, &opts),
+            Route::Gap { c1, c2 } => self.cast_gap(c, &c1, &c2, &opts),
+            Route::HalfSpace { curve, hs, curve_first } => self.cast_halfspace(c, &curve, hs, curve_first, &opts),
+            // parry's composite helper casts bounding balls itself: the same guards as parry's casts.
+            Route::Composite => match input_guard::cast_window_ok(c.m1, c.g1, c.m2, c.g2, c.t0, c.t1) {
+                Ok(true) => input_guard::finite(composite_cast_nonlinear(
+                    self, c.m1, c.g1, c.m2, c.g2, c.t0, c.t1, c.stop,
+                )),
+                Ok(false) => Ok(None),
+                Err(e) => Err(e),
+            },
+            Route::Parry { ours: true } if !c.stop && self.start_contact == StartContactPolicy::RapierAllowance => {
+                input_guard::finite(parry_nonlinear_without_stop(c.m1, c.g1, c.m2, c.g2, c.t0, c.t1))
+            }
+            Route::Parry { .. } => parry_cast_nonlinear(c.m1, c.g1, c.m2, c.g2, c.t0, c.t1, c.stop),
+        }
+    }
+
+    /// Whether the answer `r` goes out as it is (`stop_at_penetration`, or the plain policy)
+    /// rather than through the rapier rule.
+    fn plain(&self, c: &NonlinearCast) -> bool {
+        c.stop || self.start_contact == StartContactPolicy::Plain
+    }
+
+    /// A pair with a strictly convex side: the φ–t tracker.
+    fn cast_curves(
+        &self,
+        c: &NonlinearCast,
+        c1: &CurveOf,
+        c2: &CurveOf,
+        swapped: bool,
+        opts: &ToiOptions,
+    ) -> Result<Option<ShapeCastHit>, Unsupported> {
+        let (a, b) = if swapped { (c2, c1) } else { (c1, c2) };
+        // The specification's inexpensive test first: circles that never meet, no impact
+        // (and no contact at the start for the rapier rule below).
+        if bounding_circles_part(a.get(), c.m1, b.get(), c.m2, c.t0, c.t1, opts.target_distance) {
+            return Ok(None);
+        }
+        let thickness = c.g1.ccd_thickness().min(c.g2.ccd_thickness());
+        let r = curves_toi(a, c.m1, b, c.m2, c.t0, c.t1, opts);
+        if self.plain(c) {
+            return toi_to_parry(r.map(Some));
+        }
+        let dopts = &self.distance_options;
+        let at = |t: Real| pair_distance(c1, c2, swapped, &pos12_at(c.m1, c.m2, t), dopts).ok();
+        let gap = StartContactPolicy::START_CONTACT_GAP * pair_size(c.g1, c.g2);
+        toi_to_parry(r.map(|r| {
+            rapier_rule(
+                r,
+                c.m1,
+                c.m2,
+                c.t0,
+                c.t1,
+                thickness,
+                gap,
+                || {
+                    let pos12 = pos12_at(c.m1, c.m2, c.t0);
+                    if Self::far_apart(&pos12, c.g1, c.g2, gap) {
+                        return None;
+                    }
+                    pair_distance(c1, c2, swapped, &pos12, dopts)
+                        .ok()
+                        .map(|d| StartContact::from_distance(&d))
+                },
+                |t| at(t).map(|d| d.distance),
+            )
+        }))
+    }
+
+    /// No strictly convex side: the gap tracker.
+    fn cast_gap(
+        &self,
+        c: &NonlinearCast,
+        c1: &CurveOf,
+        c2: &CurveOf,
+        opts: &ToiOptions,
+    ) -> Result<Option<ShapeCastHit>, Unsupported> {
+        let (Some(p1), Some(p2)) = (c1.gap_side(), c2.gap_side()) else {
+            return Err(Unsupported);
+        };
+        if bounding_circles_part(c1.get(), c.m1, c2.get(), c.m2, c.t0, c.t1, opts.target_distance) {
+            return Ok(None);
+        }
+        let r = gap_time_of_impact(p1, c.m1, p2, c.m2, c.t0, c.t1, opts);
+        if self.plain(c) {
+            return toi_to_parry(r.map(Some));
+        }
+        let thickness = c.g1.ccd_thickness().min(c.g2.ccd_thickness());
+        let gap = StartContactPolicy::START_CONTACT_GAP * pair_size(c.g1, c.g2);
+        let at = |t: Real| gap_distance(p1, p2, &pos12_at(c.m1, c.m2, t));
+        toi_to_parry(r.map(|r| {
+            rapier_rule(
+                r,
+                c.m1,
+                c.m2,
+                c.t0,
+                c.t1,
+                thickness,
+                gap,
+                || {
+                    at(c.t0).map(|(distance, point1, point2, normal1)| StartContact {
+                        distance,
+                        point1,
+                        point2,
+                        normal1,
+                    })
+                },
+                |t| at(t).map(|d| d.0),
+            )
+        }))
+    }
+
+    /// A curve against a half-space: the half-space cast.
+    fn cast_halfspace(
+        &self,
+        c: &NonlinearCast,
+        curve: &CurveOf,
+        hs: &HalfSpace,
+        curve_first: bool,
+        opts: &ToiOptions,
+    ) -> Result<Option<ShapeCastHit>, Unsupported> {
+        let r = if curve_first {
+            time_of_impact_halfspace(curve.get(), c.m1, hs, c.m2, c.t0, c.t1, opts)
+        } else {
+            time_of_impact_halfspace(curve.get(), c.m2, hs, c.m1, c.t0, c.t1, opts).map(TimeOfImpact::swapped)
+        };
+        let thickness = if curve_first {
+            c.g1.ccd_thickness()
+        } else {
+            c.g2.ccd_thickness()
+        };
+        if self.plain(c) {
+            return toi_to_parry(r.map(Some));
+        }
+        let at = |t: Real| halfspace_distance(curve.get(), hs, &pos12_at(c.m1, c.m2, t), curve_first).ok();
+        let gap = StartContactPolicy::START_CONTACT_GAP * pair_size(c.g1, c.g2);
+        toi_to_parry(r.map(|r| {
+            rapier_rule(
+                r,
+                c.m1,
+                c.m2,
+                c.t0,
+                c.t1,
+                thickness,
+                gap,
+                || at(c.t0).map(|d| StartContact::from_distance(&d)),
+                |t| at(t).map(|d| d.distance),
+            )
+        }))
+    }
+}
