@@ -1,11 +1,14 @@
 //! Speed ratios parry / ours with the accuracy beside them, as markdown tables: the time of
-//! impact per scenario class and outcome (and per scenario kind), the stationary distance, the
+//! impact per scenario class and outcome (and per scenario kind; the classes with no strictly
+//! convex side also against parry's own shapes, section `classes-native`), the stationary
+//! distance, the
 //! contact manifolds, parry's Box2D-style `sweep_time_of_impact` where it applies, how the time
 //! of impact's cost grows with turns before impact, axis ratio and angular velocity (also drawn
 //! to `docs/figures/toi_growth.png`), and a rapier step of the pile.
 //!
 //! Run with `cargo bench --bench ratios` (all sections, a few minutes on two cores), or name
-//! sections: `cargo bench --bench ratios -- classes distance manifolds sweep growth pile`.
+//! sections: `cargo bench --bench ratios -- classes distance manifolds sweep growth pile`
+//! (`classes` runs `classes-native` too; `native` alone runs only it).
 //!
 //! Method: every scenario is timed on its own, for ours and for parry alternately, in several
 //! rounds. Each timing repeats the query enough times to last at least 200 µs (far above the
@@ -852,6 +855,9 @@ fn main() {
     let want = |name: &str| args.is_empty() || args.iter().any(|a| name.contains(a.as_str()));
     if want("classes") {
         class_tables();
+    }
+    if want("classes-native") {
+        support::native::native_table();
     }
     if want("distance") {
         distance_tables();

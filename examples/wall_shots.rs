@@ -37,6 +37,8 @@ fn short_name(kind: ShotBody) -> &'static str {
     match kind {
         ShotBody::Ellipse => "ellipse",
         ShotBody::Heptagon => "heptagon",
+        ShotBody::CapsuleEllipse => "capsule-ellipse",
+        ShotBody::Square => "square",
     }
 }
 
@@ -44,6 +46,8 @@ fn kind_name(kind: ShotBody) -> &'static str {
     match kind {
         ShotBody::Ellipse => "ellipse 0.5 x 0.2",
         ShotBody::Heptagon => "rounded heptagon r 0.4",
+        ShotBody::CapsuleEllipse => "capsule-ellipse .12/.3",
+        ShotBody::Square => "sharp square r 0.35",
     }
 }
 
@@ -115,7 +119,12 @@ struct Row {
 fn main() {
     let dir = out_dir();
     let shots = shots();
-    let kinds = [ShotBody::Ellipse, ShotBody::Heptagon];
+    let kinds = [
+        ShotBody::Ellipse,
+        ShotBody::Heptagon,
+        ShotBody::CapsuleEllipse,
+        ShotBody::Square,
+    ];
     let methods = [ShotMethod::Smooth, ShotMethod::Polygon, ShotMethod::ParryDefault];
     let mut rows = Vec::new();
     for kind in kinds {

@@ -12,7 +12,9 @@
 //!   specification's own parameter (Appendix A).
 //! * **Orientation**: counter-clockwise; `a × b = a_x b_y − a_y b_x`; T = N⊥ = (−N_y, N_x).
 //! * **Roles**: *object1* is any convex curve; *object2* must be strictly convex (its contact
-//!   point comes from the normal, eq. 4). Computations happen in object2's local frame.
+//!   point comes from the normal, eq. 4). Computations happen in object2's local frame. Pairs
+//!   with no strictly convex side (polygons, boxes, capsule-ellipses) have no roles: they take
+//!   the gap tracker, through [`shape_time_of_impact`] and [`SmoothDispatcher`].
 //! * **The three distances**, with d = S₂(−N) − P₁(φ) in object2's frame:
 //!   distanceEuclidean = |d|, distanceFwd F = d·N, distanceSide S = d × N ([`eval_pair`]).
 //!   max over φ of F is the signed distance (negative: penetration depth).

@@ -30,22 +30,29 @@ const FUZZ_CASES: u64 = 40_000;
 /// unchanged), re-recorded with issue 17: every nonlinear cast of a pair with no strictly convex
 /// side (and of parry's own convex pairs) is now the crate's exact time of impact instead of
 /// parry's, and the distance queries of this crate's such pairs the gap tracker's exact distance.
-/// Every class holds such pairs among its cases.
+/// Every class holds such pairs among its cases. Re-recorded again within issue 17 when the gap
+/// tracker's guard became faster — its step a safeguarded Newton root (within 1e-14 of the step
+/// short of the root its bisection found to the last bit), the axis turning with one body or the
+/// other (no longer also fixed), a span stopped adapting when it stops lengthening the step:
+/// only the gap tracker runs that code, so only the classes whose cases reach a guarded step of
+/// that tracker changed (`coincident`, `grazing` and `touching-at-t0` did not).
 const FUZZ_DIGESTS: [(&str, u64); 9] = [
     ("coincident", 0x0BE265BD891C2E09),
-    ("concentric", 0xBCB9D3E473277FE9),
-    ("extreme-scale", 0x3C49BFA6900F5BA0),
+    ("concentric", 0x6D4720C98F939631),
+    ("extreme-scale", 0x9AD36E20D072E515),
     ("grazing", 0xDF694D65AF3F479B),
-    ("parry-pair", 0xB20E7F2499618B7D),
-    ("random", 0xD60676371E79D0DC),
-    ("thin-ellipse", 0xB94B19056117F91C),
+    ("parry-pair", 0xFB90F37C51A81F47),
+    ("random", 0x344AEAE742D57ACB),
+    ("thin-ellipse", 0xC410A446FC44E9C7),
     ("touching-at-t0", 0x1666C6AB1C538042),
-    ("wild", 0x132E99705C0639B9),
+    ("wild", 0xD6A6F2A17807963A),
 ];
 
 /// Final-state hash of the rapier scene (re-recorded with issue 17: the CCD casts between its
-/// rounded polygons and capsule-ellipses are the crate's; 0x97F3_2395_5B85_4751 before).
-const RAPIER_STATE: u64 = 0x14D9_C197_0B12_3749;
+/// rounded polygons and capsule-ellipses are the crate's; 0x97F3_2395_5B85_4751 before, then
+/// 0x14D9_C197_0B12_3749 until the guard's root search changed as above; the other two guard
+/// changes left it as it is).
+const RAPIER_STATE: u64 = 0xFA5A_CB28_D16D_CAFD;
 
 /// FNV-1a of a sequence of words.
 fn fnv(words: impl IntoIterator<Item = u64>) -> u64 {

@@ -363,11 +363,13 @@ fn rapier_parallel_pipeline_with_the_smooth_dispatcher() {
     }
     // What holds (README, Limits): one worker is deterministic; more workers are compared with it.
     assert_eq!(one_a, one_b, "one worker twice differs");
-    for (n, same_as_one, _, _, callers) in &gaps {
-        assert!(
-            *callers > 1,
-            "{n} workers: the dispatcher was called from one thread only"
-        );
+    for (n, same_as_one, _, _, _) in &gaps {
         assert!(same_as_one, "{n} workers differ from one worker");
     }
+    // rayon may run every task of a 2-worker pool on one thread when the machine is busy (the
+    // other tests of this file run beside this one); across the pools, more than one must call.
+    assert!(
+        gaps.iter().any(|g| g.4 > 1),
+        "the dispatcher was never called from more than one thread"
+    );
 }

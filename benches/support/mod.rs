@@ -1,8 +1,9 @@
 //! The helper module of the benchmarks (`mod support;` in `benches/toi.rs` and
 //! `benches/ratios.rs`): the scenario batches of `tests/common` as parry shapes, split by
 //! outcome, the casts being compared, the poses of the stationary benchmarks, the rounded
-//! polygon – disc scenarios of the sweep benchmarks, timing, parry's polygonal stand-ins, and the
-//! pile ([`pile`]). The files of `tests/common` it needs are included as they are (`#[path]`):
+//! polygon – disc scenarios of the sweep benchmarks, timing, parry's polygonal stand-ins, the
+//! comparison on parry's own shapes ([`native`]) and the pile ([`pile`]). The files of
+//! `tests/common` it needs are included as they are (`#[path]`):
 //! the reference, the RNG, the scenario generator, the rapier world and its scenes.
 #![allow(dead_code)]
 
@@ -17,6 +18,7 @@ pub mod scenes;
 #[path = "../../tests/common/world.rs"]
 pub mod world;
 
+pub mod native;
 pub mod pile;
 
 use parry2d_f64::math::Pose;

@@ -164,33 +164,23 @@ impl SmoothDispatcher {
         }
         let thickness = c.g1.ccd_thickness().min(c.g2.ccd_thickness());
         let r = curves_toi(a, c.m1, b, c.m2, c.t0, c.t1, opts);
-        if self.plain(c) {
-            return toi_to_parry(r.map(Some));
-        }
         let dopts = &self.distance_options;
         let at = |t: Real| pair_distance(c1, c2, swapped, &pos12_at(c.m1, c.m2, t), dopts).ok();
-        let gap = StartContactPolicy::START_CONTACT_GAP * pair_size(c.g1, c.g2);
-        toi_to_parry(r.map(|r| {
-            rapier_rule(
-                r,
-                c.m1,
-                c.m2,
-                c.t0,
-                c.t1,
-                thickness,
-                gap,
-                || {
-                    let pos12 = pos12_at(c.m1, c.m2, c.t0);
-                    if Self::far_apart(&pos12, c.g1, c.g2, gap) {
-                        return None;
-                    }
-                    pair_distance(c1, c2, swapped, &pos12, dopts)
-                        .ok()
-                        .map(|d| StartContact::from_distance(&d))
-                },
-                |t| at(t).map(|d| d.distance),
-            )
-        }))
+        self.answer(
+            c,
+            r,
+            thickness,
+            |gap| {
+                let pos12 = pos12_at(c.m1, c.m2, c.t0);
+                if Self::far_apart(&pos12, c.g1, c.g2, gap) {
+                    return None;
+                }
+                pair_distance(c1, c2, swapped, &pos12, dopts)
+                    .ok()
+                    .map(|d| StartContact::from_distance(&d))
+            },
+            |t| at(t).map(|d| d.distance),
+        )
     }
 
     /// No strictly convex side: the gap tracker.
@@ -208,32 +198,22 @@ impl SmoothDispatcher {
             return Ok(None);
         }
         let r = gap_time_of_impact(p1, c.m1, p2, c.m2, c.t0, c.t1, opts);
-        if self.plain(c) {
-            return toi_to_parry(r.map(Some));
-        }
         let thickness = c.g1.ccd_thickness().min(c.g2.ccd_thickness());
-        let gap = StartContactPolicy::START_CONTACT_GAP * pair_size(c.g1, c.g2);
         let at = |t: Real| gap_distance(p1, p2, &pos12_at(c.m1, c.m2, t));
-        toi_to_parry(r.map(|r| {
-            rapier_rule(
-                r,
-                c.m1,
-                c.m2,
-                c.t0,
-                c.t1,
-                thickness,
-                gap,
-                || {
-                    at(c.t0).map(|(distance, point1, point2, normal1)| StartContact {
-                        distance,
-                        point1,
-                        point2,
-                        normal1,
-                    })
-                },
-                |t| at(t).map(|d| d.0),
-            )
-        }))
+        self.answer(
+            c,
+            r,
+            thickness,
+            |_| {
+                at(c.t0).map(|(distance, point1, point2, normal1)| StartContact {
+                    distance,
+                    point1,
+                    point2,
+                    normal1,
+                })
+            },
+            |t| at(t).map(|d| d.0),
+        )
     }
 
     /// A curve against a half-space: the half-space cast.
@@ -255,23 +235,32 @@ impl SmoothDispatcher {
         } else {
             c.g2.ccd_thickness()
         };
+        let at = |t: Real| halfspace_distance(curve.get(), hs, &pos12_at(c.m1, c.m2, t), curve_first).ok();
+        self.answer(
+            c,
+            r,
+            thickness,
+            |_| at(c.t0).map(|d| StartContact::from_distance(&d)),
+            |t| at(t).map(|d| d.distance),
+        )
+    }
+
+    /// The answer `r` of a cast, out to parry: as it is under `stop_at_penetration` or the plain
+    /// policy, otherwise through the rapier rule (`start_contact`) with the pair's CCD
+    /// `thickness`, its contact at the window start `start(gap)` (`gap` the policy's start-contact
+    /// gap for the pair's size) and its signed distance `at(t)`.
+    fn answer(
+        &self,
+        c: &NonlinearCast,
+        r: Result<TimeOfImpact, QueryError>,
+        thickness: Real,
+        start: impl Fn(Real) -> Option<StartContact>,
+        at: impl Fn(Real) -> Option<Real>,
+    ) -> Result<Option<ShapeCastHit>, Unsupported> {
         if self.plain(c) {
             return toi_to_parry(r.map(Some));
         }
-        let at = |t: Real| halfspace_distance(curve.get(), hs, &pos12_at(c.m1, c.m2, t), curve_first).ok();
         let gap = StartContactPolicy::START_CONTACT_GAP * pair_size(c.g1, c.g2);
-        toi_to_parry(r.map(|r| {
-            rapier_rule(
-                r,
-                c.m1,
-                c.m2,
-                c.t0,
-                c.t1,
-                thickness,
-                gap,
-                || at(c.t0).map(|d| StartContact::from_distance(&d)),
-                |t| at(t).map(|d| d.distance),
-            )
-        }))
+        toi_to_parry(r.map(|r| rapier_rule(r, c.m1, c.m2, c.t0, c.t1, thickness, gap, || start(gap), at)))
     }
 }

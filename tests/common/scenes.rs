@@ -229,7 +229,24 @@ pub enum ShotBody {
     Ellipse,
     /// Rounded regular heptagon, circumradius 0.4, corner radius 0.06.
     Heptagon,
+    /// The Appendix A shape, `CapsuleEllipse::new(0.12, 0.15, 0.3)`.
+    CapsuleEllipse,
+    /// A sharp square (corner radius 0), circumradius 0.35.
+    Square,
 }
+
+/// What the shots hit: a thin fixed plank 0.05 × 6 at x = [`WALL_X`].
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub enum Wall {
+    /// parry's `Cuboid`.
+    Cuboid,
+    /// This crate's `RoundedPolygon`: the plank's core dilated by a corner radius of 0.005
+    /// (parry's `RoundConvexPolygon` for the polygon method).
+    Rounded,
+}
+
+/// The plank's corner radius when it is a rounded polygon.
+const PLANK_RADIUS: f64 = 0.005;
 
 /// How a shot is simulated: the shape and the narrow phase.
 #[derive(Clone, Copy, PartialEq, Eq, Debug)]
@@ -277,6 +294,29 @@ pub fn shot_shape(body: ShotBody, method: ShotMethod) -> SharedShape {
                 SharedShape::new(p)
             }
         }
+        (ShotBody::CapsuleEllipse, m) => {
+            let c = CapsuleEllipse::new(0.12, 0.15, 0.3);
+            if m == ShotMethod::Polygon {
+                // 32 boundary points, spread by the normal angle.
+                let pts = (0..32)
+                    .map(|i| {
+                        let a = std::f64::consts::TAU * i as f64 / 32.0;
+                        ConvexCurve::support_point(&c, Vector::new(a.cos(), a.sin()))
+                    })
+                    .collect();
+                SharedShape::convex_polyline(pts).expect("a convex 32-gon")
+            } else {
+                SharedShape::new(c)
+            }
+        }
+        (ShotBody::Square, m) => {
+            let p = RoundedPolygon::regular(4, 0.35, 0.0);
+            if m == ShotMethod::Polygon {
+                SharedShape::new(p.to_parry().expect("a square").inner_shape)
+            } else {
+                SharedShape::new(p)
+            }
+        }
     }
 }
 
@@ -292,11 +332,31 @@ pub struct Shot {
 /// as `shot` (CCD on, never asleep), with the narrow phase of `method`. Returns the world and the
 /// body.
 pub fn wall_shot(method: ShotMethod, shape: SharedShape, shot: Shot) -> (World, RigidBodyHandle) {
+    wall_shot_at(method, shape, shot, Wall::Cuboid)
+}
+
+/// As [`wall_shot`] with the plank `wall`.
+pub fn wall_shot_at(method: ShotMethod, shape: SharedShape, shot: Shot, wall: Wall) -> (World, RigidBodyHandle) {
     let mut world = World::new(method.narrow_phase());
-    world.insert(
-        RigidBodyBuilder::fixed().translation(Vector::new(WALL_X, 0.0)),
-        ColliderBuilder::cuboid(WALL_HALF, WALL_HALF_HEIGHT),
-    );
+    let plank = match wall {
+        Wall::Cuboid => ColliderBuilder::cuboid(WALL_HALF, WALL_HALF_HEIGHT),
+        Wall::Rounded => {
+            let (hx, hy) = (WALL_HALF - PLANK_RADIUS, WALL_HALF_HEIGHT - PLANK_RADIUS);
+            let core = [
+                Vector::new(-hx, -hy),
+                Vector::new(hx, -hy),
+                Vector::new(hx, hy),
+                Vector::new(-hx, hy),
+            ];
+            let p = RoundedPolygon::new(&core, PLANK_RADIUS);
+            if method == ShotMethod::Polygon {
+                ColliderBuilder::new(SharedShape::new(p.to_parry().expect("a plank")))
+            } else {
+                ColliderBuilder::new(SharedShape::new(p))
+            }
+        }
+    };
+    world.insert(RigidBodyBuilder::fixed().translation(Vector::new(WALL_X, 0.0)), plank);
     let (h, _) = world.insert(
         RigidBodyBuilder::dynamic()
             .rotation(shot.angle0)
@@ -307,4 +367,40 @@ pub fn wall_shot(method: ShotMethod, shape: SharedShape, shot: Shot) -> (World, 
         ColliderBuilder::new(shape),
     );
     (world, h)
+}
+
+/// Where the two bodies of [`head_on`] start: at x = ∓`HEAD_ON_X`.
+pub const HEAD_ON_X: f64 = 3.0;
+
+/// A world without gravity holding two bodies shot at each other along the x axis: collider
+/// `a` at (−[`HEAD_ON_X`], 0) launched as `sa` (towards +x), collider `b` at (+[`HEAD_ON_X`], 0)
+/// launched as `sb` (towards −x); never asleep. CCD is on for `a` only: rapier 0.36 sweeps a
+/// CCD body ("bullet") against every other body, moving ones included, but never against
+/// another bullet (`tier_allows` in its `dynamics/ccd/sweeps.rs`). Returns the world and the
+/// bodies.
+pub fn head_on(
+    method: ShotMethod,
+    a: SharedShape,
+    b: SharedShape,
+    sa: Shot,
+    sb: Shot,
+) -> (World, RigidBodyHandle, RigidBodyHandle) {
+    let mut world = World::new(method.narrow_phase());
+    let mut launch = |x: f64, dir: f64, s: Shot, shape: SharedShape, ccd: bool| {
+        world
+            .insert(
+                RigidBodyBuilder::dynamic()
+                    .translation(Vector::new(x, 0.0))
+                    .rotation(s.angle0)
+                    .linvel(Vector::new(dir * s.speed, 0.0))
+                    .angvel(s.spin)
+                    .ccd_enabled(ccd)
+                    .can_sleep(false),
+                ColliderBuilder::new(shape),
+            )
+            .0
+    };
+    let ha = launch(-HEAD_ON_X, 1.0, sa, a, true);
+    let hb = launch(HEAD_ON_X, -1.0, sb, b, false);
+    (world, ha, hb)
 }

@@ -5,8 +5,8 @@
 //! the time direction of the step, s ≥ 0). The gap along it, g(s) = G(θₖ + λs, tₖ + s), is a
 //! lower bound on D(tₖ + s). Its three terms (module docs of `frame`):
 //!
-//! * −ΔC·u: ΔC is affine in time, so its second derivative is at most
-//!   λ²·max|ΔC| + 2|λ||ΔV| (max over the step's ends);
+//! * −ΔC·u: a known function of s (ΔC is affine in time): its first two derivatives at 0 are
+//!   exact and |λ|³·max|ΔC| + 3λ²|ΔV| bounds its third (max over the step's ends);
 //! * −h̃ₓ(ψₓ(s)) for each body, with ψₓ turning at wₓ = λ − ωₓ. h̃ₓ(m) = max over the body's
 //!   support points p of (p − cₓ)·m, and over the step only the points whose normals the
 //!   direction sweeps can be support points: the arc A from the support at m₀ to the support at
@@ -16,15 +16,18 @@
 //!   m₀, so the smallest slope is the one of the arc's end: −wₓ(p_end − cₓ)·m₀⊥. Hence
 //!   −h̃ₓ(ψₓ(s)) ≥ −h̃ₓ(m₀) − wₓ(p_end − cₓ)·m₀⊥·s − wₓ²R̃ₓs²/2 on [0, span]. (Beyond a quarter
 //!   turn, |wₓ|R̃ₓ bounds the slope.) A face inside the swept arc shows in p_end: the bound pays
-//!   for the support jumping across it, which is why λ is chosen among 0, ω₁ and ω₂ — the rate
-//!   that keeps the body whose face holds the contact still (wₓ = 0: exact) — whichever allows
-//!   the longest step.
+//!   for the support jumping across it, which is why λ is ω₁ or ω₂ — the rate that keeps the
+//!   body whose face holds the contact still (wₓ = 0: exact) — whichever allows the longer
+//!   step.
 //!
-//! Summed: g(s) ≥ G(uₖ) + σ·s − M·s²/2 on [0, span], and the step
-//! s_A = 2Δ/(−σ + √(σ² + 2MΔ)) (Δ = G(uₖ) − δ) keeps the bound above the target: no contact in
-//! [tₖ, tₖ + s_A]. Near a contact the slope is the exact D' of the contact's own configuration
-//! (the support of the turning side moves by ρ·wₓ·span along a corner), so the steps converge
-//! like Newton's.
+//! A polygon side whose support vertex v keeps the swept directions inside its cone is known
+//! better: it contributes exactly −(v − cₓ)·m(s) − r (exact first two derivatives, third at most
+//! |wₓ|³|v − cₓ|).
+//!
+//! Summed: g(s) ≥ q(s) = G(uₖ) + a₁s + a₂s²/2 − a₃s³/6 on [0, span] ([`Bound`]), and the step
+//! is the first root of q − δ ([`Bound::step`]): no contact in [tₖ, tₖ + step]. Near a contact
+//! the coefficients are the exact D′ and D″ of the contact's own configuration (the face's body
+//! still, the vertex keeping its cone), so the steps converge like Newton's.
 
 // The negated comparisons (`!(x > 0.0)`) are deliberate: they are true for NaN.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
@@ -49,8 +52,14 @@ pub(crate) fn parabola_step(gap: f64, slope: f64, m: f64) -> f64 {
     2.0 * gap / (-slope + (slope * slope + 2.0 * m * gap).sqrt())
 }
 
-/// Bisections of [`Bound::step`]'s root at most (it stops when the bracket no longer shrinks).
-const ROOT_BISECTIONS: usize = 80;
+/// Iterations of [`Bound::step`]'s root search at most (safeguarded Newton; bisection alone
+/// needs at most ~64 to exhaust a double bracket).
+const ROOT_ITERATIONS: usize = 80;
+
+/// Relative accuracy of [`Bound::step`]'s root: the step returned is below the root by at most
+/// about this fraction of it (shorter is always safe; well above the rounding noise of q, so
+/// Newton's last steps are not spent on it).
+const ROOT_TOL: f64 = 1e-14;
 
 impl Bound {
     /// q at s for the gap `gap`.
@@ -98,23 +107,76 @@ impl Bound {
         for &hi in &ends[..=n] {
             if !(self.q(gap, hi) > 0.0) {
                 // q falls from positive to ≤ 0 on the monotone piece [lo, hi].
-                let (mut a, mut b) = (lo, hi);
-                for _ in 0..ROOT_BISECTIONS {
-                    let m = 0.5 * (a + b);
-                    if !(m > a && m < b) {
-                        break;
-                    }
-                    if self.q(gap, m) > 0.0 {
-                        a = m;
-                    } else {
-                        b = m;
-                    }
-                }
-                return a;
+                return self.last_positive(gap, lo, hi);
             }
             lo = hi;
         }
         span
+    }
+
+    /// q′ at s.
+    #[inline]
+    fn dq(&self, s: f64) -> f64 {
+        self.a1 + s * (self.a2 - 0.5 * s * self.a3)
+    }
+
+    /// The root of q on [lo, hi], where q is monotone with q(lo) > 0 ≥ q(hi), approached from
+    /// the positive side: the returned s has q(s) > 0 and lies within [`ROOT_TOL`]·s of the
+    /// root (or is the last point of a bracket that no longer shrinks).
+    ///
+    /// Safeguarded Newton: each iterate that leaves the bracket [a, b] (q(a) > 0 ≥ q(b)) is
+    /// replaced by its midpoint, and every evaluation shrinks the bracket. Newton converges to
+    /// the root from one side only, so once its step is within the tolerance the point
+    /// 2·[`ROOT_TOL`] beyond it on the other side is probed to close the bracket.
+    fn last_positive(&self, gap: f64, lo: f64, hi: f64) -> f64 {
+        let (mut a, mut b) = (lo, hi);
+        let mut x = lo;
+        let mut qx = self.q(gap, x);
+        // Start at the root of the parabola without the cubic term, when it is in the bracket:
+        // it bounds q from above, so its first root is at or beyond q's.
+        let start = parabola_step(gap, self.a1, -self.a2);
+        if start > a && start < b {
+            x = start;
+            qx = self.q(gap, x);
+            if qx > 0.0 {
+                a = x;
+            } else {
+                b = x;
+            }
+        }
+        for _ in 0..ROOT_ITERATIONS {
+            if b - a <= ROOT_TOL * b {
+                break;
+            }
+            let newton = x - qx / self.dq(x);
+            let mut converged = (newton - x).abs() <= ROOT_TOL * x.abs();
+            let mut next = if converged {
+                // Probe across the root, twice the tolerance away.
+                x + if qx > 0.0 { 2.0 } else { -2.0 } * ROOT_TOL * x
+            } else {
+                newton
+            };
+            if !(next > a && next < b) {
+                converged = false;
+                next = 0.5 * (a + b);
+                if !(next > a && next < b) {
+                    break;
+                }
+            }
+            let before = qx > 0.0;
+            x = next;
+            qx = self.q(gap, x);
+            if qx > 0.0 {
+                a = x;
+            } else {
+                b = x;
+            }
+            if converged && before != (qx > 0.0) {
+                // The probe crossed the root: the bracket is within 3·ROOT_TOL of it.
+                break;
+            }
+        }
+        a
     }
 
     /// A curvature bound M of a parabola that bounds q from below over `span` (for sizing

@@ -21,13 +21,14 @@
 //!
 //! From an accepted time tₖ, the gap along an axis that starts at the maximum's axis and turns at
 //! a constant rate λ is a lower bound on D. Bounding each body's support function over the
-//! directions the axis sweeps in the step — by the support point at the far end of the sweep,
-//! which pays for a face the sweep crosses, and |p − c| for the curvature of each point's term —
-//! gives g(s) ≥ D(tₖ) + σs − Ms²/2 on the step (`guard`). The step
-//! s_A = 2Δ/(−σ + √(σ² + 2MΔ)), Δ = D(tₖ) − δ, keeps that parabola above the target, so D stays
-//! above it on [tₖ, tₖ + s_A] whatever the spins, corner radii (0 included) or grazing angle. λ
-//! is taken among 0, ω₁ and ω₂ for the longest step: near a face–vertex contact the face's own
-//! spin keeps the face still (exact bound), and the steps converge like Newton's on D.
+//! directions the axis sweeps in the step — exactly, by the sinusoid of its support vertex, when
+//! a polygon's vertex keeps its cone; otherwise by the support point at the far end of the
+//! sweep, which pays for a face the sweep crosses, and |p − c| for the curvature of each point's
+//! term — gives g(s) ≥ D(tₖ) + a₁s + a₂s²/2 − a₃s³/6 on the step (`guard`). Its first root s_A
+//! above the target keeps D above it on [tₖ, tₖ + s_A] whatever the spins, corner radii (0
+//! included) or grazing angle. λ is ω₁ or ω₂, whichever gives the longer step: near a
+//! face–vertex contact the face's own spin keeps the face still (exact bound), and the steps
+//! converge like Newton's on D.
 //!
 //! A longer step is taken when the same bound taken backwards from its end covers the rest
 //! (s_A + s_B ≥ h, after the end's exact distance is known); approaching, the step aims at the

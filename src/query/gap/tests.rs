@@ -1,5 +1,6 @@
 //! Unit tests of the gap tracker: the exact distance against dense sampling of the gap, the
-//! guard's parabola against the true distance over its span, and closed-form impacts.
+//! guard's bound against the true distance over its span, its step against plain bisection, and
+//! closed-form impacts.
 
 use super::frame::GapMotion;
 use super::maxgap::Pair;
@@ -132,7 +133,7 @@ fn exact_distance_of_dilated_polygons_matches_dense_sampling() {
 }
 
 #[test]
-fn guard_parabola_bounds_the_distance_over_its_span() {
+fn guard_bound_holds_below_the_distance_over_its_span() {
     let mut rng = Rng(5);
     let mut checked = 0;
     for _ in 0..300 {
@@ -170,6 +171,71 @@ fn guard_parabola_bounds_the_distance_over_its_span() {
         }
     }
     assert!(checked > 10_000);
+}
+
+/// The first root of q on [0, span] by bisection over a fine grid's first sign change (the
+/// guard's step before its safeguarded Newton): the reference for the next test.
+fn first_root_by_bisection(b: &guard::Bound, gap: f64, span: f64) -> f64 {
+    let n = 4096;
+    let mut lo = 0.0;
+    for k in 1..=n {
+        let hi = span * k as f64 / n as f64;
+        if b.q(gap, hi) <= 0.0 {
+            let (mut x, mut y) = (lo, hi);
+            for _ in 0..200 {
+                let m = 0.5 * (x + y);
+                if !(m > x && m < y) {
+                    break;
+                }
+                if b.q(gap, m) > 0.0 {
+                    x = m;
+                } else {
+                    y = m;
+                }
+            }
+            return x;
+        }
+        lo = hi;
+    }
+    span
+}
+
+#[test]
+fn guard_step_is_the_first_root_of_its_bound_from_the_safe_side() {
+    let mut rng = Rng(11);
+    let (mut roots, mut whole) = (0, 0);
+    for _ in 0..20_000 {
+        let b = guard::Bound {
+            a1: rng.range(-10.0, 10.0),
+            a2: rng.range(-100.0, 100.0),
+            a3: if rng.next() < 0.2 { 0.0 } else { rng.range(0.0, 1e4) },
+        };
+        let gap = 10f64.powf(rng.range(-12.0, 0.0));
+        let span = 10f64.powf(rng.range(-6.0, 0.0));
+        let s = b.step(gap, span);
+        let r = first_root_by_bisection(&b, gap, span);
+        // The grid can miss a root where q only dips to zero between two of its points; the
+        // step must never be beyond the reference, and is within 1e-13 of it otherwise.
+        assert!(
+            s <= r,
+            "step {s} beyond the first root {r} ({b:?}, gap {gap}, span {span})"
+        );
+        assert!(
+            s > 0.0 && b.q(gap, s) > 0.0 || s == span,
+            "q ≤ 0 at the step {s} ({b:?})"
+        );
+        if r < span {
+            assert!(
+                s >= r * (1.0 - 1e-13),
+                "step {s} short of the root {r} ({b:?}, gap {gap})"
+            );
+            roots += 1;
+        } else {
+            whole += 1;
+        }
+    }
+    println!("guard step: {roots} roots, {whole} spans without one");
+    assert!(roots > 5_000 && whole > 1_000);
 }
 
 #[test]
@@ -246,7 +312,7 @@ fn spinning_square_corner_reaches_a_wall_when_its_support_does() {
 }
 
 #[test]
-fn guard_parabola_bounds_the_distance_with_curve_sides() {
+fn guard_bound_holds_below_the_distance_with_curve_sides() {
     use super::side::CurveSide;
     use crate::CapsuleEllipse;
     let mut rng = Rng(9);

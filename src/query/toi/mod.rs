@@ -115,7 +115,9 @@ const CONTACT_FLOOR: f64 = 1e-12;
 
 /// The time of impact of `shape1` moving by `motion1` and `shape2` moving by `motion2` in
 /// `[start_time, end_time]`. One of the shapes must be strictly convex (it plays object2; the
-/// result is reported in the caller's order).
+/// result is reported in the caller's order); for two shapes with flat faces on both sides
+/// (polygons, boxes, capsule-ellipses) use [`crate::shape_time_of_impact`], which takes any two
+/// convex parry shapes.
 ///
 /// The shapes may be trait objects (`&dyn ConvexCurve`) or of known types; with known types the
 /// query is compiled for that pair, and the curves' evaluations are inlined into it (about a
