@@ -179,7 +179,8 @@ pub enum QueryError {
     Degenerate,
     /// A shape the query cannot take: [`crate::shape_time_of_impact`] takes this crate's shapes
     /// and parry's convex shapes (ball, cuboid, capsule, segment, triangle, convex polygon and
-    /// their round versions) and half-spaces, not composites or other custom shapes.
+    /// their round versions) and half-spaces, not composites, other custom shapes, two
+    /// half-spaces or a box whose half-extents are not both positive.
     UnsupportedShape,
     /// The time window is reversed (`end_time < start_time`). An empty window
     /// (`start_time == end_time`) is not an error: the answer is at `start_time`,
@@ -200,6 +201,21 @@ impl fmt::Display for QueryError {
 }
 
 impl std::error::Error for QueryError {}
+
+/// Answers whose every number can be checked finite: the last guard of the queries (finite but
+/// absurd input, e.g. a rotation of 1e300, can overflow where no earlier check looks).
+pub(crate) trait AllFinite {
+    /// Whether every number in the answer is finite.
+    fn all_finite(&self) -> bool;
+}
+
+/// `r`, or [`QueryError::Degenerate`] when the answer holds a non-finite number.
+pub(crate) fn finite<T: AllFinite>(r: Result<T, QueryError>) -> Result<T, QueryError> {
+    match r {
+        Ok(v) if !v.all_finite() => Err(QueryError::Degenerate),
+        r => r,
+    }
+}
 
 /// A tolerance the queries accept: finite and ≥ 0.
 pub(crate) fn tolerance_ok(x: f64) -> bool {

@@ -35,6 +35,25 @@ fn size_of(g: &dyn Shape) -> f64 {
     g.compute_local_bounding_sphere().radius
 }
 
+/// Shapes of kinds `k1` and `k2`, and shape 2's pose in shape 1's frame: centres `reach` times
+/// the sum of the bounding radii apart, `reach` uniform in `reach_range`, any direction and
+/// rotation. Also the pair's size (the larger bounding radius).
+fn random_pair(
+    k1: &str,
+    k2: &str,
+    rng: &mut Rng,
+    reach_range: (f64, f64),
+) -> (Box<dyn Shape>, Box<dyn Shape>, Pose, f64) {
+    let g1 = random_shape(k1, rng);
+    let g2 = random_shape(k2, rng);
+    let size = size_of(&*g1).max(size_of(&*g2));
+    let reach = size_of(&*g1) + size_of(&*g2);
+    let dir = rng.uniform(-3.2, 3.2);
+    let r = reach * rng.uniform(reach_range.0, reach_range.1);
+    let pos12 = Pose::new(Vector::new(r * dir.cos(), r * dir.sin()), rng.uniform(-3.2, 3.2));
+    (g1, g2, pos12, size)
+}
+
 /// Signed distance by dense sampling of the separating-axis gap (independent of both).
 fn dense_gap(pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape) -> f64 {
     let (s1, s2) = (g1.as_support_map().unwrap(), g2.as_support_map().unwrap());
@@ -96,13 +115,7 @@ fn distance_and_contact_agree_with_parry_over_random_configurations() {
         let mut iters = Vec::with_capacity(n);
         let (mut worst_sep, mut worst_pen, mut penetrating, mut parry_off) = (0.0f64, 0.0f64, 0usize, 0usize);
         for case in 0..n {
-            let g1 = random_shape(k1, &mut rng);
-            let g2 = random_shape(k2, &mut rng);
-            let size = size_of(&*g1).max(size_of(&*g2));
-            let reach = size_of(&*g1) + size_of(&*g2);
-            let dir = rng.uniform(-3.2, 3.2);
-            let r = reach * rng.uniform(0.2, 1.4);
-            let pos12 = Pose::new(Vector::new(r * dir.cos(), r * dir.sin()), rng.uniform(-3.2, 3.2));
+            let (g1, g2, pos12, size) = random_pair(k1, k2, &mut rng, (0.2, 1.4));
             let ours = d
                 .signed_distance(&pos12, &*g1, &*g2)
                 .expect("pair handled")
@@ -245,13 +258,7 @@ fn faceted_pairs_distance_and_contact_agree_with_parry_and_dense_sampling() {
         let (mut worst_parry, mut worst_dense, mut penetrating, mut parry_off, mut dense_checked) =
             (0.0f64, 0.0f64, 0usize, 0usize, 0usize);
         for case in 0..n {
-            let g1 = random_shape(k1, &mut rng);
-            let g2 = random_shape(k2, &mut rng);
-            let size = size_of(&*g1).max(size_of(&*g2));
-            let reach = size_of(&*g1) + size_of(&*g2);
-            let dir = rng.uniform(-3.2, 3.2);
-            let r = reach * rng.uniform(0.1, 1.3);
-            let pos12 = Pose::new(Vector::new(r * dir.cos(), r * dir.sin()), rng.uniform(-3.2, 3.2));
+            let (g1, g2, pos12, size) = random_pair(k1, k2, &mut rng, (0.1, 1.3));
             let mine = d.distance(&pos12, &*g1, &*g2).expect("distance").distance;
             let contact = d
                 .contact(&pos12, &*g1, &*g2, f64::MAX)

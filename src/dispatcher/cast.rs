@@ -83,7 +83,11 @@ pub(crate) fn toi_to_parry(r: Result<Option<TimeOfImpact>, QueryError>) -> Resul
 ///
 /// # Errors
 /// [`QueryError::UnsupportedShape`] for a shape it cannot take (composites, other custom
-/// shapes); otherwise as [`crate::time_of_impact`].
+/// shapes, two half-spaces, a parry box whose half-extents are not both positive);
+/// otherwise as [`crate::time_of_impact`]: [`QueryError::NonFinite`] for a non-finite motion,
+/// time or option, [`QueryError::EmptyWindow`] for a reversed window,
+/// [`QueryError::Degenerate`] where finite but absurd input overflows (never a NaN answer;
+/// `tests/shape_time_of_impact.rs`).
 pub fn shape_time_of_impact(
     shape1: &dyn Shape,
     motion1: &NonlinearRigidMotion,

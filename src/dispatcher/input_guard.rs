@@ -53,11 +53,7 @@ pub(crate) fn shapes_ok(g1: &dyn Shape, g2: &dyn Shape) -> bool {
     ok(g1) && ok(g2)
 }
 
-/// Answers parry gives that hold only finite numbers.
-pub(crate) trait AllFinite {
-    /// Whether every number in the answer is finite.
-    fn all_finite(&self) -> bool;
-}
+pub(crate) use crate::error::AllFinite;
 
 impl AllFinite for ShapeIntersection {
     fn all_finite(&self) -> bool {

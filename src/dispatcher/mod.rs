@@ -133,8 +133,10 @@ impl SmoothDispatcher {
         self
     }
 
-    /// The signed distance, witnesses and normals of a pair this dispatcher answers itself, in
-    /// the caller's order; `None` when the pair goes to parry.
+    /// The signed distance, witnesses and normals of a pair with a strictly convex side or a
+    /// half-space, in the caller's order, as [`crate::stationary_distance`] gives them; `None`
+    /// for other pairs (those with no strictly convex side get their exact distance through
+    /// the dispatcher's `distance`, `contact` and `closest_points`; the rest go to parry).
     pub fn signed_distance(
         &self,
         pos12: &Pose,

@@ -7,7 +7,7 @@ use super::composite::{
 };
 use super::input_guard;
 use super::parry_fallback::parry_contact;
-use super::route::{curves_toi, route, route_cast, Route, RouteScratch};
+use super::route::{curves_toi, route, CurveOf, Route, RouteScratch};
 use super::SmoothDispatcher;
 use crate::numerics::math::{Pose, Real, Vector};
 use crate::query::gap::gap_distance;
@@ -23,23 +23,16 @@ use parry2d_f64::shape::Shape;
 /// (distance, witness on shape 1 and on shape 2 in their frames, shape 1's normal and shape 2's).
 type GapDistance = (Real, Vector, Vector, Vector, Vector);
 
-impl SmoothDispatcher {
-    /// For a pair with no strictly convex side that the gap tracker takes (polygons,
-    /// capsule-ellipses, curves with faces), its exact signed distance at `pos12` (`Some(None)`
-    /// for non-finite input); `None` for other pairs.
-    fn gap_pair_distance(pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape) -> Option<Option<GapDistance>> {
-        let mut scratch = RouteScratch::default();
-        let Route::Gap { c1, c2 } = route_cast(g1, g2, &mut scratch) else {
-            return None;
-        };
-        Some(match (c1.gap_side(), c2.gap_side()) {
-            (Some(a), Some(b)) if pos12.is_finite() => gap_distance(a, b, pos12).and_then(|(d, p1, p2, n1)| {
-                let n2 = pos12.rotation.inverse() * -n1;
-                (d.is_finite() && p1.is_finite() && p2.is_finite() && n2.is_finite()).then_some((d, p1, p2, n1, n2))
-            }),
-            _ => None,
-        })
+/// The exact signed distance at `pos12` of a pair the gap tracker takes ([`Route::Gap`]); `None`
+/// for non-finite input or answer.
+fn gap_pair_distance(c1: &CurveOf, c2: &CurveOf, pos12: &Pose) -> Option<GapDistance> {
+    let (a, b) = (c1.gap_side()?, c2.gap_side()?);
+    if !pos12.is_finite() {
+        return None;
     }
+    let (d, p1, p2, n1) = gap_distance(a, b, pos12)?;
+    let n2 = pos12.rotation.inverse() * -n1;
+    (d.is_finite() && p1.is_finite() && p2.is_finite() && n2.is_finite()).then_some((d, p1, p2, n1, n2))
 }
 
 impl QueryDispatcher for SmoothDispatcher {
@@ -49,18 +42,12 @@ impl QueryDispatcher for SmoothDispatcher {
         g1: &dyn Shape,
         g2: &dyn Shape,
     ) -> Result<ShapeIntersection, Unsupported> {
-        let mut scratch = RouteScratch::default();
-        let routed = route(g1, g2, &mut scratch);
-        if let Some(gap) = matches!(routed, Route::Parry { ours: true })
-            .then(|| Self::gap_pair_distance(pos12, g1, g2))
-            .flatten()
-        {
-            return match gap {
+        match route(g1, g2, &mut RouteScratch::default()) {
+            // The gap tracker's exact distance for pairs with no strictly convex side.
+            Route::Gap { c1, c2 } => match gap_pair_distance(&c1, &c2, pos12) {
                 Some(d) => Ok(ShapeIntersection::new(d.0 <= 0.0)),
                 None => Err(Unsupported),
-            };
-        }
-        match routed {
+            },
             Route::Parry { .. } => input_guard::parry(pos12, g1, g2, 0.0, || {
                 DefaultQueryDispatcher.intersection_test(pos12, g1, g2)
             }),
@@ -78,18 +65,12 @@ impl QueryDispatcher for SmoothDispatcher {
     }
 
     fn distance(&self, pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape) -> Result<ShapeDistance, Unsupported> {
-        let mut scratch = RouteScratch::default();
-        let routed = route(g1, g2, &mut scratch);
-        if let Some(gap) = matches!(routed, Route::Parry { ours: true })
-            .then(|| Self::gap_pair_distance(pos12, g1, g2))
-            .flatten()
-        {
-            return match gap {
+        match route(g1, g2, &mut RouteScratch::default()) {
+            // The gap tracker's exact distance for pairs with no strictly convex side.
+            Route::Gap { c1, c2 } => match gap_pair_distance(&c1, &c2, pos12) {
                 Some(d) => Ok(ShapeDistance::new(d.0.max(0.0))),
                 None => Err(Unsupported),
-            };
-        }
-        match routed {
+            },
             Route::Parry { .. } => {
                 input_guard::parry(pos12, g1, g2, 0.0, || DefaultQueryDispatcher.distance(pos12, g1, g2))
             }
@@ -112,20 +93,13 @@ impl QueryDispatcher for SmoothDispatcher {
             // parry's contract (its composite helpers assert it): no negative or NaN margin.
             return Err(Unsupported);
         }
-        let mut scratch = RouteScratch::default();
-        let routed = route(g1, g2, &mut scratch);
-        // The gap tracker's exact distance for pairs with no strictly convex side.
-        if let Some(gap) = matches!(routed, Route::Parry { ours: true })
-            .then(|| Self::gap_pair_distance(pos12, g1, g2))
-            .flatten()
-        {
-            return match gap {
+        match route(g1, g2, &mut RouteScratch::default()) {
+            // The gap tracker's exact distance for pairs with no strictly convex side.
+            Route::Gap { c1, c2 } => match gap_pair_distance(&c1, &c2, pos12) {
                 Some((d, p1, p2, n1, n2)) if d <= prediction => Ok(Some(Contact::new(p1, p2, n1, n2, d))),
                 Some(_) => Ok(None),
                 None => Err(Unsupported),
-            };
-        }
-        match routed {
+            },
             // parry's, robust to nearly touching shapes (`parry_contact`).
             Route::Parry { ours: true } => {
                 input_guard::parry(pos12, g1, g2, prediction, || parry_contact(pos12, g1, g2, prediction))
@@ -162,20 +136,14 @@ impl QueryDispatcher for SmoothDispatcher {
             // parry's contract (it asserts it for balls and half-spaces): no negative or NaN margin.
             return Err(Unsupported);
         }
-        let mut scratch = RouteScratch::default();
-        let routed = route(g1, g2, &mut scratch);
-        if let Some(gap) = matches!(routed, Route::Parry { ours: true })
-            .then(|| Self::gap_pair_distance(pos12, g1, g2))
-            .flatten()
-        {
-            return match gap {
+        match route(g1, g2, &mut RouteScratch::default()) {
+            // The gap tracker's exact distance for pairs with no strictly convex side.
+            Route::Gap { c1, c2 } => match gap_pair_distance(&c1, &c2, pos12) {
                 Some((d, ..)) if d <= 0.0 => Ok(ClosestPoints::Intersecting),
                 Some((d, p1, p2, ..)) if d <= max_dist => Ok(ClosestPoints::WithinMargin(p1, p2)),
                 Some(_) => Ok(ClosestPoints::Disjoint),
                 None => Err(Unsupported),
-            };
-        }
-        match routed {
+            },
             Route::Parry { .. } => input_guard::parry(pos12, g1, g2, max_dist, || {
                 DefaultQueryDispatcher.closest_points(pos12, g1, g2, max_dist)
             }),

@@ -247,12 +247,13 @@ pub(crate) enum Route<'a> {
         curve_first: bool,
     },
     /// No strictly convex side (polygons, capsule-ellipses, curves with faces), in the caller's
-    /// order: the gap tracker (nonlinear casts only, [`route_cast`]).
+    /// order: the gap tracker (both sides have a [`CurveOf::gap_side`]). [`route`] gives it for
+    /// pairs with one of this crate's shapes, [`route_cast`] for parry's own pairs too.
     Gap { c1: CurveOf<'a>, c2: CurveOf<'a> },
     /// Composite on one side: parry's helpers with this dispatcher.
     Composite,
-    /// parry's default dispatcher; `ours` when one side is this crate's shape (the pair has no
-    /// strictly convex side, or the other side is not convertible).
+    /// parry's default dispatcher; `ours` when one side is this crate's shape (the other side
+    /// is not convertible, or a side with no strictly convex representation has no gap side).
     Parry { ours: bool },
 }
 
@@ -365,7 +366,7 @@ fn route_for<'a>(g1: &'a dyn Shape, g2: &'a dyn Shape, scratch: &'a mut RouteScr
                     c2: c1,
                     swapped: true,
                 }
-            } else if cast && c1.gap_side().is_some() && c2.gap_side().is_some() {
+            } else if c1.gap_side().is_some() && c2.gap_side().is_some() {
                 Route::Gap { c1, c2 }
             } else {
                 Route::Parry { ours }

@@ -298,29 +298,9 @@ pub(crate) fn parry_nonlinear_without_stop(
             .map(|c| c.dist)
     };
     let deeper = deepening_time(c.distance, rate, t0, t1, thickness, signed);
-    // Separating at the start: the earlier of parry's later hit and a deepening of the contact.
-    if rate.is_nan() || rate >= 0.0 {
-        return Ok(match (later, deeper) {
-            (Some(h), Some(t)) if t >= h.time_of_impact => Some(h),
-            (Some(h), None) => Some(h),
-            (_, Some(t)) => Some(ShapeCastHit {
-                time_of_impact: t,
-                witness1: c.point1,
-                witness2: c.point2,
-                normal1: c.normal1,
-                normal2: pos12.rotation.inverse() * -c.normal1,
-                status: ShapeCastStatus::PenetratingOrWithinTargetDist,
-                subshape1: 0,
-                subshape2: 0,
-            }),
-            (None, None) => None,
-        });
-    }
-    let Some(time) = deeper else {
-        return Ok(None);
-    };
-    Ok(Some(ShapeCastHit {
-        time_of_impact: time,
+    // The hit at a deepening of the start contact: its witnesses, at time `t`.
+    let deepening_hit = |t: Real| ShapeCastHit {
+        time_of_impact: t,
         witness1: c.point1,
         witness2: c.point2,
         normal1: c.normal1,
@@ -328,5 +308,15 @@ pub(crate) fn parry_nonlinear_without_stop(
         status: ShapeCastStatus::PenetratingOrWithinTargetDist,
         subshape1: 0,
         subshape2: 0,
-    }))
+    };
+    // Separating at the start: the earlier of parry's later hit and a deepening of the contact.
+    if rate.is_nan() || rate >= 0.0 {
+        return Ok(match (later, deeper) {
+            (Some(h), Some(t)) if t >= h.time_of_impact => Some(h),
+            (Some(h), None) => Some(h),
+            (_, Some(t)) => Some(deepening_hit(t)),
+            (None, None) => None,
+        });
+    }
+    Ok(deeper.map(deepening_hit))
 }

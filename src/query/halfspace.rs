@@ -23,17 +23,14 @@
 //! Newton's.
 
 use crate::curve::ConvexCurve;
-use crate::error::QueryError;
+use crate::error::{finite, QueryError};
 use crate::numerics::math::{perp, Pose, Vector};
 use crate::numerics::motion::motion_is_finite;
-use crate::query::stationary::{finite_distance, DistanceStatus, StationaryDistance};
-use crate::query::toi::{finite_toi, TimeOfImpact, ToiCost, ToiOptions, ToiStatus};
+use crate::query::stationary::{DistanceStatus, StationaryDistance};
+use crate::query::stepping::CONTACT_FLOOR;
+use crate::query::toi::{TimeOfImpact, ToiCost, ToiOptions, ToiStatus};
 use parry2d_f64::query::NonlinearRigidMotion;
 use parry2d_f64::shape::HalfSpace;
-
-/// How far below the target a reported contact may be, relative to the size (the `Hit`
-/// contract: D ≥ δ − 1e-12·s).
-const CONTACT_FLOOR: f64 = 1e-12;
 
 /// Signed distance between `curve` and the half-space `hs`; `pos12` is shape 2's pose in shape 1's
 /// frame and `curve_first` tells whether shape 1 is the curve. Results in the caller's order.
@@ -74,7 +71,7 @@ pub fn halfspace_distance(
         newton_iterations: 0,
         evaluations: 1,
     };
-    finite_distance(Ok(if curve_first {
+    finite(Ok(if curve_first {
         base
     } else {
         StationaryDistance {
@@ -176,7 +173,7 @@ pub fn time_of_impact_halfspace(
     t1: f64,
     opts: &ToiOptions,
 ) -> Result<TimeOfImpact, QueryError> {
-    finite_toi(toi_halfspace(curve, mc, hs, mh, t0, t1, opts))
+    finite(toi_halfspace(curve, mc, hs, mh, t0, t1, opts))
 }
 
 fn toi_halfspace(

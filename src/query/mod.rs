@@ -1,5 +1,6 @@
 //! The queries on two curves: the three distances with their derivatives (`pair`), the root
-//! solver of distanceSide (`solver`), the stationary distance, the time of impact, and both
+//! solver of distanceSide (`solver`), the stationary distance, the time of impact (`toi` with a
+//! strictly convex side, `gap` without one, what their step loops share in `stepping`), and both
 //! against a half-space.
 
 pub(crate) mod gap;
@@ -7,4 +8,5 @@ pub(crate) mod halfspace;
 pub(crate) mod pair;
 pub(crate) mod solver;
 pub(crate) mod stationary;
+pub(crate) mod stepping;
 pub(crate) mod toi;

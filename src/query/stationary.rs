@@ -23,7 +23,7 @@
 //!    gets a local solve. Concave kinks (sharp corners) only lower F, so the bound stays valid.
 
 use crate::curve::ConvexCurve;
-use crate::error::{tolerance_ok, QueryError};
+use crate::error::{finite, tolerance_ok, AllFinite, QueryError};
 use crate::numerics::angle::{ccw_angle, wrap_phi};
 use crate::numerics::math::{unit, Pose, Vector};
 use crate::numerics::motion::PairFrame;
@@ -157,26 +157,14 @@ impl DistanceOptions {
     }
 }
 
-impl StationaryDistance {
-    /// Whether every number of the answer is finite (the public queries answer
-    /// [`QueryError::Degenerate`] otherwise).
-    pub(crate) fn is_finite(&self) -> bool {
+impl AllFinite for StationaryDistance {
+    fn all_finite(&self) -> bool {
         self.distance.is_finite()
             && self.phi.is_finite()
             && self.point1.is_finite()
             && self.point2.is_finite()
             && self.normal1.is_finite()
             && self.normal2.is_finite()
-    }
-}
-
-/// `r`, or [`QueryError::Degenerate`] when the answer holds a non-finite number: the last guard
-/// of the public queries (finite but absurd input, e.g. a rotation of 1e300, can overflow where
-/// no earlier check looks).
-pub(crate) fn finite_distance(r: Result<StationaryDistance, QueryError>) -> Result<StationaryDistance, QueryError> {
-    match r {
-        Ok(d) if !d.is_finite() => Err(QueryError::Degenerate),
-        r => r,
     }
 }
 
@@ -227,7 +215,7 @@ pub fn stationary_distance<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized>(
     }
     let frame = PairFrame::from_pos12(pos12);
     let phi0 = obj1.phi_range_of_normal(direction_or_x(pos12.translation)).0;
-    finite_distance(stationary_in_frame(obj1, obj2, frame, phi0, options))
+    finite(stationary_in_frame(obj1, obj2, frame, phi0, options))
 }
 
 fn direction_or_x(v: Vector) -> Vector {

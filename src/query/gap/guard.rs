@@ -35,6 +35,7 @@
 use super::frame::GapFrame;
 use super::maxgap::{GapMax, Pair};
 use crate::numerics::math::{perp, rotate_cs, sin_cos};
+use crate::query::stepping::parabola_step;
 use core::f64::consts::FRAC_PI_2;
 
 /// The guard's lower bound over a span: the gap along the turning axis is at least
@@ -44,12 +45,6 @@ pub(crate) struct Bound {
     pub a1: f64,
     pub a2: f64,
     pub a3: f64,
-}
-
-/// The largest s with gap + slope·s − m s²/2 ≥ 0 (infinite when m = 0 ≤ slope).
-#[inline]
-pub(crate) fn parabola_step(gap: f64, slope: f64, m: f64) -> f64 {
-    2.0 * gap / (-slope + (slope * slope + 2.0 * m * gap).sqrt())
 }
 
 /// Iterations of [`Bound::step`]'s root search at most (safeguarded Newton; bisection alone

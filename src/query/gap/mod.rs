@@ -55,9 +55,9 @@ mod tracker;
 
 pub(crate) use side::{CurveSide, PolySide, Side};
 
-use crate::error::QueryError;
+use crate::error::{finite, QueryError};
 use crate::numerics::math::Vector;
-use crate::query::toi::{finite_toi, TimeOfImpact, ToiOptions};
+use crate::query::toi::{TimeOfImpact, ToiOptions};
 use parry2d_f64::query::NonlinearRigidMotion;
 use tracker::GapTracker;
 
@@ -72,7 +72,7 @@ pub(crate) fn gap_time_of_impact(
     end_time: f64,
     options: &ToiOptions,
 ) -> Result<TimeOfImpact, QueryError> {
-    finite_toi(GapTracker::new(side1, motion1, side2, motion2, start_time, end_time, options)?.run())
+    finite(GapTracker::new(side1, motion1, side2, motion2, start_time, end_time, options)?.run())
 }
 
 /// The signed distance of `side1` and `side2` with `side2` at `pos12` in `side1`'s frame

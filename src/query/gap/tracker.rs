@@ -6,51 +6,31 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 use super::frame::{GapFrame, GapMotion};
-use super::guard::parabola_step;
 use super::maxgap::{Contact, GapMax, Pair};
 use super::side::Side;
 use crate::error::QueryError;
 use crate::numerics::math::{rotate_cs, sin_cos, Vector};
 use crate::numerics::motion::motion_is_finite;
+use crate::query::stepping::{
+    parabola_step, LeaveWalk, CONTACT_FLOOR, EXTENSION, EXTENSION_MARGIN, EXTENSION_ROUNDS, FINE, MIN_EXTENSION,
+};
 use crate::query::toi::circles::{circles_reach, circles_stay_apart};
 use crate::query::toi::{TimeOfImpact, ToiCost, ToiOptions, ToiStatus};
 use parry2d_f64::query::NonlinearRigidMotion;
 
-/// How far below the target a reported contact may be, relative to the size (the `Hit`
-/// contract: D ≥ δ − 1e-12·s).
-const CONTACT_FLOOR: f64 = 1e-12;
 /// A guard bound is retaken over this many of its steps when the step falls well inside its span
 /// (a shorter span sweeps fewer directions: a tighter bound, with room for the two-sided
 /// extension), and over this factor squared times its span when the step fills the span.
 const LOCAL_SPAN: f64 = 2.5;
 /// Rounds of the span adaptation of each guard bound ([`GapTracker::best_step`]).
 const SPAN_ROUNDS: usize = 4;
-/// A two-sided (or aimed) step is at most this many guard steps s_A long.
-const EXTENSION: f64 = 2.0;
-/// Rounds of the fixed point that sizes a two-sided step from the Taylor model of D.
-const EXTENSION_ROUNDS: usize = 3;
-/// A two-sided step is s_A + s_B shortened by this factor (room for the model's error).
-const EXTENSION_MARGIN: f64 = 1.1;
-/// A two-sided step is tried only when it is at least this many guard steps long.
-const MIN_EXTENSION: f64 = 1.05;
-/// The refinement stops when the gap is below this fraction of the size …
-const FINE: f64 = 1e-15;
-/// … or its next step below this fraction of the window …
+/// The refinement stops when the gap is below [`FINE`] of the size, or its next step below this
+/// fraction of the window …
 const REFINE_TIME: f64 = 1e-13;
 /// … or after this many steps.
 const REFINE_STEPS: usize = 24;
 /// Newton steps backwards from a point accepted a hair beyond the target, at most.
 const BACKWARD_STEPS: usize = 4;
-/// The first step out of a separating contact at the start is at most this fraction of the
-/// window (then doubled each step) …
-const LEAVE_FIRST_STEP: f64 = 1.0 / 64.0;
-/// … and at least this fraction of it.
-const LEAVE_MIN_STEP: f64 = 1e-9;
-/// The first step out of a separating contact aims to clear the target by this many distance
-/// tolerances.
-const LEAVE_CLEARANCE: f64 = 2.0;
-/// Each further step out of a separating contact is this many times the last.
-const LEAVE_GROWTH: f64 = 2.0;
 
 /// A point of the path: its time, frame and the distance's maximum there.
 #[derive(Copy, Clone, Debug)]
@@ -421,34 +401,15 @@ impl<'a> GapTracker<'a> {
     /// From a separating contact at the start, steps forward until the distance exceeds the
     /// target (that point), the shapes approach again while still in contact (that point), or
     /// the window ends (`None`).
-    fn leave_contact(&mut self, mut p: Point) -> Result<Option<Point>, QueryError> {
-        let delta = self.opts.target_distance;
-        let window = self.t1 - self.t0;
-        let mut h = window * LEAVE_FIRST_STEP;
-        let (d1, _) = self.rates(&p);
-        if d1 > 0.0 {
-            h = h.min(((delta + LEAVE_CLEARANCE * self.tol_d - p.at.d) / d1).max(window * LEAVE_MIN_STEP));
-        }
-        for _ in 0..self.opts.max_steps {
-            let t = p.fr.time;
-            if t >= self.t1 {
-                return Ok(None);
-            }
-            let t_new = (t + h).min(self.t1);
-            if !(t_new > t) {
-                return Ok(None);
-            }
-            p = self.eval_from(&p, t_new)?;
+    fn leave_contact(&mut self, p: Point) -> Result<Option<Point>, QueryError> {
+        let walk = LeaveWalk::new(self.t0, self.t1, &self.opts, self.tol_d);
+        let (t, d, d1) = (p.fr.time, p.at.d, self.rates(&p).0);
+        walk.run(p, t, (d, d1), |p, t_new| {
+            let q = self.eval_from(p, t_new)?;
             self.cost.predictor_steps += 1;
-            if p.at.d > delta + self.tol_d {
-                return Ok(Some(p));
-            }
-            if self.rates(&p).0 <= 0.0 {
-                return Ok(Some(p));
-            }
-            h *= LEAVE_GROWTH;
-        }
-        Ok(Some(p))
+            let (d, d1) = (q.at.d, self.rates(&q).0);
+            Ok((q, d, d1))
+        })
     }
 
     /// The answer at the point `p`: witnesses on each shape in its local frame.

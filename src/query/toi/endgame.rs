@@ -4,34 +4,22 @@
 
 use super::corrector::Tol;
 use super::guard::{curve_taylor, predict_phi};
-use super::{NoTrace, TimeOfImpact, ToiStatus, TraceEvent, Tracer, Tracker, CONTACT_FLOOR};
+use super::{NoTrace, TimeOfImpact, ToiStatus, TraceEvent, Tracer, Tracker};
 use crate::curve::ConvexCurve;
 use crate::error::QueryError;
 use crate::query::pair::PairJet;
+use crate::query::stepping::{LeaveWalk, CONTACT_FLOOR, FINE};
 
 /// The refinement of a contact ([`Tracker::refine_hit`]) stops when its next Newton step on D
 /// would move the time by less than this fraction of the window: the time is then within about
 /// that of the contact (the accuracy tests allow 1e-9; the worst measured is in docs/performance.md).
 const REFINE_TIME: f64 = 1e-13;
-/// Points closer to the target than this fraction of the size are the contact itself (the
-/// refinement stops there).
-const FINE: f64 = 1e-15;
 /// Newton steps on D backwards from an aimed point a hair below the target.
 const BACKWARD_NEWTON_STEPS: usize = 4;
 /// Newton steps on D from the safe side.
 const FORWARD_NEWTON_STEPS: usize = 8;
 /// Illinois regula falsi iterations between a safe point and one beyond the contact.
 const ILLINOIS_STEPS: usize = 40;
-/// The first step out of a separating contact at the start is at most this fraction of the
-/// window (then doubled each step) …
-const LEAVE_FIRST_STEP: f64 = 1.0 / 64.0;
-/// … and at least this fraction of it.
-const LEAVE_MIN_STEP: f64 = 1e-9;
-/// The first step out of a separating contact aims to clear the target by this many distance
-/// tolerances.
-const LEAVE_CLEARANCE: f64 = 2.0;
-/// Each further step out of a separating contact is this many times the last.
-const LEAVE_GROWTH: f64 = 2.0;
 
 impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
     /// From a point (t_b, φ_b) of an aimed step that landed beyond the contact (D < δ), back to
@@ -220,40 +208,15 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
     #[inline(never)]
     pub(super) fn leave_contact(
         &mut self,
-        mut t: f64,
-        mut phi: f64,
+        t: f64,
+        phi: f64,
         j0: &PairJet,
     ) -> Result<Option<(f64, f64, PairJet)>, QueryError> {
-        let delta = self.opts.target_distance;
-        let window = self.t1 - self.t0;
-        let mut j = *j0;
-        let mut h = window * LEAVE_FIRST_STEP;
-        // A first step that roughly clears the target by the tolerance.
-        if j.fwd.t > 0.0 {
-            h = h.min(((delta + LEAVE_CLEARANCE * self.tol_d - j.fwd.v) / j.fwd.t).max(window * LEAVE_MIN_STEP));
-        }
-        for _ in 0..self.opts.max_steps {
-            if t >= self.t1 {
-                return Ok(None);
-            }
-            let t_new = (t + h).min(self.t1);
-            if !(t_new > t) {
-                // A window below the resolution of time (h = 0): as an empty window, no hit.
-                return Ok(None);
-            }
+        let walk = LeaveWalk::new(self.t0, self.t1, &self.opts, self.tol_d);
+        walk.run((t, phi, *j0), t, (j0.fwd.v, j0.fwd.t), |&(_, phi, _), t_new| {
             let (p2, j2) = self.global_at(t_new, phi, Tol::Fixed(self.side_tol))?;
             self.cost.predictor_steps += 1;
-            t = t_new;
-            phi = self.rewrap(p2);
-            j = j2;
-            if j.fwd.v > delta + self.tol_d {
-                return Ok(Some((t, phi, j)));
-            }
-            if j.fwd.t <= 0.0 {
-                return Ok(Some((t, phi, j)));
-            }
-            h *= LEAVE_GROWTH;
-        }
-        Ok(Some((t, phi, j)))
+            Ok(((t_new, self.rewrap(p2), j2), j2.fwd.v, j2.fwd.t))
+        })
     }
 }

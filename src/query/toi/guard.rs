@@ -64,12 +64,6 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
     }
 }
 
-/// The largest h with gap + slope·h − M h²/2 ≥ 0 (the guard; infinite when M = 0 ≤ slope).
-#[inline]
-pub(super) fn guard_step(gap: f64, slope: f64, m: f64) -> f64 {
-    2.0 * gap / (-slope + (slope * slope + 2.0 * m * gap).sqrt())
-}
-
 /// Taylor data of the curve S = 0 through a corrected point (eqs. 7–8): the Newton correction
 /// −S/S_φ of a residual S, the slope φ' = −S_t/S_φ and the bending
 /// φ'' = −(S_tt + 2S_φt φ' + S_φφ φ'²)/S_φ (all zero when S_φ ≤ 0).

@@ -101,17 +101,13 @@ mod tracker;
 mod types;
 
 pub use circles::bounding_circles_part;
-pub(crate) use types::{finite_toi, NoTrace, Tracer};
+pub(crate) use types::{NoTrace, Tracer};
 pub use types::{TimeOfImpact, ToiCost, ToiOptions, ToiStatus, TraceEvent};
 
 use crate::curve::ConvexCurve;
-use crate::error::QueryError;
+use crate::error::{finite, QueryError};
 use crate::numerics::motion::{PairFrame, RelativeMotion};
 use parry2d_f64::query::NonlinearRigidMotion;
-
-/// How far below the target a reported contact may be, relative to the size (the `Hit`
-/// contract: D ≥ δ − 1e-12·s).
-const CONTACT_FLOOR: f64 = 1e-12;
 
 /// The time of impact of `shape1` moving by `motion1` and `shape2` moving by `motion2` in
 /// `[start_time, end_time]`. One of the shapes must be strictly convex (it plays object2; the
@@ -148,7 +144,7 @@ pub fn time_of_impact<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized>(
     end_time: f64,
     options: &ToiOptions,
 ) -> Result<TimeOfImpact, QueryError> {
-    finite_toi(toi_roles(
+    finite(toi_roles(
         shape1,
         motion1,
         shape2,
@@ -174,7 +170,7 @@ pub fn time_of_impact_traced<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized>(
     options: &ToiOptions,
     trace: &mut Vec<TraceEvent>,
 ) -> Result<TimeOfImpact, QueryError> {
-    finite_toi(toi_roles(
+    finite(toi_roles(
         shape1, motion1, shape2, motion2, start_time, end_time, options, trace,
     ))
 }

@@ -4,8 +4,8 @@
 
 use super::circles::{circles_reach, circles_stay_apart};
 use super::corrector::Tol;
-use super::guard::{curve_taylor, guard_step};
-use super::{TimeOfImpact, ToiCost, ToiStatus, TraceEvent, Tracer, Tracker, CONTACT_FLOOR};
+use super::guard::curve_taylor;
+use super::{TimeOfImpact, ToiCost, ToiStatus, TraceEvent, Tracer, Tracker};
 use crate::curve::ConvexCurve;
 use crate::error::QueryError;
 use crate::numerics::angle::wrap_phi;
@@ -13,6 +13,9 @@ use crate::numerics::math::{rotate_cs, sin_cos, Vector};
 use crate::numerics::motion::{motion_is_finite, PairFrame, RelativeMotion};
 use crate::query::pair::PairJet;
 use crate::query::solver::Solver;
+use crate::query::stepping::{
+    parabola_step, CONTACT_FLOOR, EXTENSION, EXTENSION_MARGIN, EXTENSION_ROUNDS, MIN_EXTENSION,
+};
 use crate::query::toi::ToiOptions;
 use core::f64::consts::TAU;
 use core::ops::ControlFlow;
@@ -24,18 +27,6 @@ const MAX_TRAVEL: f64 = 1.0;
 /// steps s_A (the two-sided extension needs room beyond s_A; a longer span sweeps more
 /// directions and loosens the bound).
 const LOCAL_BOUND_SPAN: f64 = 2.5;
-/// A two-sided (or aimed) step is at most this many guard steps s_A long: the backward bound
-/// from its end must cover what the forward one does not.
-const EXTENSION: f64 = 2.0;
-/// Rounds of the fixed point that sizes a two-sided step from the Taylor model of D
-/// (h = (s_A + s_B(h)) / margin).
-const EXTENSION_ROUNDS: usize = 3;
-/// A two-sided step is s_A + s_B shortened by this factor: room for the model's error, so that
-/// the certification after the correction usually passes.
-const EXTENSION_MARGIN: f64 = 1.1;
-/// A two-sided step is tried only when it is at least this many guard steps long (shorter, the
-/// plain guard step is as good and needs no certification).
-const MIN_EXTENSION: f64 = 1.05;
 /// A corrected point that moved more than this (radians, the corrector's move plus what is left
 /// of its Newton step) from the prediction is not trusted for a contact: it could be a local
 /// maximum of F ≤ 0 on another branch of S = 0.
@@ -470,7 +461,7 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
         let mut span = h;
         let (mut m, mut lam) = self.guard_bound(t, span, None);
         let slope_at = |lam: f64| j.fwd.t - (lam - self.omega1) * j.side.v;
-        let mut h_guard = guard_step(gap, slope_at(lam), m);
+        let mut h_guard = parabola_step(gap, slope_at(lam), m);
         // The Taylor model of D along the curve: D'' and where it reaches the target (NaN or
         // infinite if it does not). A loosely accepted point lies `resid` off the root: D
         // and D' there are F and F_t carried to the root along φ (F_φ = −ω₁S ≠ 0 off it),
@@ -480,7 +471,7 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
         let d1_m = j.fwd.t + j.fwd.pt * resid;
         // (Only needed when the guard limits the step: the aim below is taken only then.)
         let h_model = if h_guard < h {
-            guard_step(gap_m, d1_m, -d2)
+            parabola_step(gap_m, d1_m, -d2)
         } else {
             f64::NAN
         };
@@ -497,7 +488,7 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
             // Limited with the global curvature bounds: try the local ones.
             let span2 = (LOCAL_BOUND_SPAN * h_guard).min(span);
             let (m2, lam2) = self.guard_bound(t, span2, Some(j));
-            let hg2 = guard_step(gap, slope_at(lam2), m2).min(span2);
+            let hg2 = parabola_step(gap, slope_at(lam2), m2).min(span2);
             if hg2 > h_guard {
                 (m, lam, h_guard, span) = (m2, lam2, hg2, span2);
             }
@@ -521,7 +512,7 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
                         he = h_guard;
                         break;
                     }
-                    let s_b = guard_step(g_end, -(j.fwd.t + d2 * he), m);
+                    let s_b = parabola_step(g_end, -(j.fwd.t + d2 * he), m);
                     he = ((h_guard + s_b) / EXTENSION_MARGIN).min(span);
                 }
             }
@@ -578,7 +569,7 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
             let gap_b = jc.fwd.v - delta - if plan.aim { floor } else { 0.0 };
             let slope_b = jc.fwd.t - (plan.lam - self.omega1) * jc.side.v;
             let s_b = if gap_b > 0.0 {
-                guard_step(gap_b, -slope_b, plan.m)
+                parabola_step(gap_b, -slope_b, plan.m)
             } else {
                 0.0
             };

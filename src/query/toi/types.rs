@@ -1,6 +1,8 @@
 //! The public types of the time of impact: options, status, cost, result and trace events.
 
-use crate::error::{tolerance_ok, QueryError};
+#[cfg(doc)]
+use crate::error::QueryError;
+use crate::error::{tolerance_ok, AllFinite};
 use crate::numerics::math::Vector;
 use crate::query::stationary::DistanceOptions;
 
@@ -281,10 +283,8 @@ impl ToiOptions {
     }
 }
 
-impl TimeOfImpact {
-    /// Whether every number of the answer is finite (the public queries answer
-    /// [`QueryError::Degenerate`] otherwise).
-    pub(crate) fn is_finite(&self) -> bool {
+impl AllFinite for TimeOfImpact {
+    fn all_finite(&self) -> bool {
         self.time.is_finite()
             && self.distance.is_finite()
             && self.distance_rate.is_finite()
@@ -292,15 +292,5 @@ impl TimeOfImpact {
             && self.point2.is_finite()
             && self.normal1.is_finite()
             && self.normal2.is_finite()
-    }
-}
-
-/// `r`, or [`QueryError::Degenerate`] when the answer holds a non-finite number: the last guard
-/// of the public queries (finite but absurd input, e.g. a rotation of 1e300, can overflow where
-/// no earlier check looks).
-pub(crate) fn finite_toi(r: Result<TimeOfImpact, QueryError>) -> Result<TimeOfImpact, QueryError> {
-    match r {
-        Ok(t) if !t.is_finite() => Err(QueryError::Degenerate),
-        r => r,
     }
 }
