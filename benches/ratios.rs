@@ -31,7 +31,7 @@ use std::time::Duration;
 use support::scenarios::{par_map, ScenarioClass, ScenarioKind};
 use support::{split_batch, sweep_of, Case, PolygonDisc};
 
-use support::timing::{calibrate, quantile, time_contenders, time_once, time_pair, ROUNDS};
+use support::timing::{calibrate, quantile, time_contenders, time_once, ROUNDS};
 
 fn us(x: f64) -> String {
     if x.is_nan() {
@@ -643,90 +643,6 @@ fn distance_tables() {
     }
 }
 
-/// A posed pair with parry's polygonal versions of its shapes.
-type WithPolygons = (PosedPair, Box<dyn Shape>, Box<dyn Shape>);
-
-fn manifold_tables() {
-    use parry2d_f64::query::{ContactManifold, PersistentQueryDispatcher};
-    let d = SmoothDispatcher::default();
-    println!("\n## Contact manifolds: speed ratio parry / ours\n");
-    println!(
-        "Per class, the pair of each of the {} scenarios at its window-start orientation with the centres brought together until the exact signed distance is −1 % of the size (a resting contact), prediction 1 % of the size. Ours: `SmoothDispatcher`'s `contact_manifolds` on the exact shapes. Parry: `DefaultQueryDispatcher`'s polygonal-feature-map manifolds on its polygon approximations (ellipses and `CapsuleEllipse`s as inscribed {}-gons, rounded polygons as parry's `RoundConvexPolygon`, exact). Depth error: the deepest manifold point's distance against the reference signed distance, relative to the size. Each call recomputes the contact points (parry's shortcut for an unchanged pose is defeated by clearing the points; the manifolds and parry's warm-start normal are kept).\n",
-        support::BATCH,
-        support::POLYGON_VERTICES
-    );
-    println!("| class | n | ours median µs | parry median µs | ratio of medians | ratio of p90s | per-scenario ratio median | worst depth error/size ours | parry | median depth error/size parry |");
-    println!("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
-    for class in ScenarioClass::ALL {
-        let set: Vec<WithPolygons> = (0..support::BATCH as u64)
-            .filter_map(|seed| {
-                let c = Case::new(class, seed);
-                let size = c.s.size();
-                let pose = c.pose_at_depth(-0.01 * size, &d)?;
-                let (a1, a2) = (
-                    support::parry_polygonal(&c.s.shape1),
-                    support::parry_polygonal(&c.s.shape2),
-                );
-                Some((PosedPair::new(c, pose), a1, a2))
-            })
-            .collect();
-        let (mut to, mut tp, mut eo, mut ep, mut eps) = (vec![], vec![], 0.0f64, 0.0f64, vec![]);
-        for (p, a1, a2) in &set {
-            let prediction = 0.01 * p.size;
-            let mut mo: Vec<ContactManifold<(), ()>> = Vec::new();
-            let mut mp: Vec<ContactManifold<(), ()>> = Vec::new();
-            let (mut wo, mut wp) = (None, None);
-            let deepest = |m: &Vec<ContactManifold<(), ()>>| {
-                m.iter()
-                    .flat_map(|m| m.points.iter().map(|c| c.dist))
-                    .fold(f64::INFINITY, f64::min)
-            };
-            let _ = d.contact_manifolds(&p.pos12, &*p.case.g1, &*p.case.g2, prediction, &mut mo, &mut wo);
-            let _ = DefaultQueryDispatcher.contact_manifolds(&p.pos12, &**a1, &**a2, prediction, &mut mp, &mut wp);
-            let e_o = (deepest(&mo) - p.reference).abs() / p.size;
-            let e_p = (deepest(&mp) - p.reference).abs() / p.size;
-            eo = eo.max(e_o);
-            ep = ep.max(e_p);
-            eps.push(e_p);
-            // Each call recomputes: the points are cleared first (otherwise parry's manifold
-            // would be reused as it stands, the pose being unchanged), the manifolds themselves
-            // are kept (no allocation, the previous normal warm-starts parry).
-            let (a, b) = time_pair(
-                &mut || {
-                    mo.iter_mut().for_each(|m| m.clear());
-                    let _ = black_box(d.contact_manifolds(
-                        &p.pos12,
-                        &*p.case.g1,
-                        &*p.case.g2,
-                        prediction,
-                        &mut mo,
-                        &mut wo,
-                    ));
-                },
-                &mut || {
-                    mp.iter_mut().for_each(|m| m.clear());
-                    let _ = black_box(
-                        DefaultQueryDispatcher.contact_manifolds(&p.pos12, &**a1, &**a2, prediction, &mut mp, &mut wp),
-                    );
-                },
-            );
-            to.push(a);
-            tp.push(b);
-        }
-        let (mo, mp, rm, r9, rs) = ratios(&to, &tp);
-        println!(
-            "| {} | {} | {} | {} | {rm:.2} | {r9:.2} | {rs:.2} | {} | {} | {} |",
-            class.name(),
-            set.len(),
-            us(mo),
-            us(mp),
-            sci(eo),
-            sci(ep),
-            sci(quantile(&eps, 0.5))
-        );
-    }
-}
-
 fn sweep_tables() {
     use parry2d_f64::query::{sweep_time_of_impact, SweepToiStatus, ToiProxy};
     let d = SmoothDispatcher::default();
@@ -807,46 +723,64 @@ fn pile_table() {
     use std::time::Instant;
     use support::pile::{Pile, BODIES};
     const STEPS: usize = 400;
+    const EARLY: usize = 200;
     println!("\n## rapier: one step of the pile\n");
     println!(
-        "`examples/pile.rs`'s {BODIES} bodies (ellipses, rounded polygons, `CapsuleEllipse`s) dropped into a box, {STEPS} steps of 1/60 s from the start (falling, then piling up). Ours: the exact shapes with `SmoothDispatcher`; parry: ellipses and `CapsuleEllipse`s as inscribed {}-gons, rounded polygons as `RoundConvexPolygon`, parry's default dispatcher. The best of 3 runs.\n",
+        "`examples/pile.rs`'s {BODIES} bodies (ellipses, rounded polygons, `CapsuleEllipse`s) dropped into a box, {STEPS} steps of 1/60 s from the start (falling, then piling up; the exact pile falls asleep after about 330 steps, parry's does not, so the first {EARLY} steps are also shown). Ours: the exact shapes with `SmoothDispatcher` (warm start on or off); parry: ellipses and `CapsuleEllipse`s as inscribed {}-gons, rounded polygons as `RoundConvexPolygon`, parry's default dispatcher. rapier's contact recycling (`IntegrationParameters::contact_recycling`) on and off. The best of 3 runs.\n",
         support::POLYGON_VERTICES
     );
-    println!("| narrow phase | mean step ms | max step ms | touching pairs at the end |");
-    println!("|---|---:|---:|---:|");
-    let mut means = [0.0; 2];
-    for (i, (label, exact)) in [
-        ("SmoothDispatcher, exact shapes", true),
-        ("parry, polygon approximations", false),
-    ]
-    .into_iter()
-    .enumerate()
-    {
-        let (mut best_mean, mut best_max, mut touching) = (f64::INFINITY, f64::INFINITY, 0);
-        for _ in 0..3 {
-            let mut pile = Pile::new(exact);
-            let (mut total, mut worst) = (0.0f64, 0.0f64);
-            for _ in 0..STEPS {
-                let st = Instant::now();
-                pile.step();
-                let el = st.elapsed().as_secs_f64();
-                total += el;
-                worst = worst.max(el);
+    println!("| contact recycling | narrow phase | mean step ms | mean of the first {EARLY} steps ms | max step ms | touching pairs at the end |");
+    println!("|---|---|---:|---:|---:|---:|");
+    for recycling in [true, false] {
+        let mut means = [0.0; 3];
+        let mut early = [0.0; 3];
+        for (i, (label, exact, warm)) in [
+            ("SmoothDispatcher, exact shapes", true, true),
+            ("SmoothDispatcher, exact shapes, no warm start", true, false),
+            ("parry, polygon approximations", false, false),
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            let (mut best_mean, mut best_early, mut best_max, mut touching) = (f64::INFINITY, f64::INFINITY, 0.0, 0);
+            for _ in 0..3 {
+                let mut pile = Pile::with(exact, recycling, warm);
+                let (mut total, mut first, mut worst) = (0.0f64, 0.0f64, 0.0f64);
+                for k in 0..STEPS {
+                    let st = Instant::now();
+                    pile.step();
+                    let el = st.elapsed().as_secs_f64();
+                    total += el;
+                    if k < EARLY {
+                        first += el;
+                    }
+                    worst = worst.max(el);
+                }
+                best_early = best_early.min(first / EARLY as f64);
+                if total / (STEPS as f64) < best_mean {
+                    best_mean = total / STEPS as f64;
+                    best_max = worst;
+                    touching = pile.touching_pairs();
+                }
             }
-            if total / (STEPS as f64) < best_mean {
-                best_mean = total / STEPS as f64;
-                best_max = worst;
-                touching = pile.touching_pairs();
-            }
+            means[i] = best_mean;
+            early[i] = best_early;
+            println!(
+                "| {} | {label} | {:.3} | {:.3} | {:.3} | {touching} |",
+                if recycling { "on" } else { "off" },
+                best_mean * 1e3,
+                best_early * 1e3,
+                best_max * 1e3
+            );
         }
-        means[i] = best_mean;
         println!(
-            "| {label} | {:.3} | {:.3} | {touching} |",
-            best_mean * 1e3,
-            best_max * 1e3
+            "\nRecycling {}: ratio parry / ours of the mean step {:.2} (first {EARLY} steps {:.2}); warm start off / on {:.2}.\n",
+            if recycling { "on" } else { "off" },
+            means[2] / means[0],
+            early[2] / early[0],
+            means[1] / means[0]
         );
     }
-    println!("\nRatio parry / ours of the mean step: {:.2}.", means[1] / means[0]);
 }
 
 fn main() {
@@ -863,7 +797,7 @@ fn main() {
         distance_tables();
     }
     if want("manifolds") {
-        manifold_tables();
+        support::manifolds::table();
     }
     if want("sweep") {
         sweep_tables();

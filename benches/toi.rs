@@ -7,8 +7,9 @@
 //!   whole batch);
 //! * `distance/<class>`: the stationary distance (`distance` when separated, `contact` when
 //!   penetrating) against parry's GJK and EPA through the shapes' support maps;
-//! * `manifolds/<class>`: `contact_manifolds` on the exact shapes against parry's
-//!   polygonal-feature-map manifolds on its polygon approximations, at resting contacts;
+//! * `manifolds/<kind>`: `contact_manifolds` on the exact shapes against parry's manifolds on
+//!   its polygonal stand-ins, every pair kind of `support/manifolds.rs` at a resting and a deep
+//!   overlap;
 //! * `sweep/rounded_polygon-disc`: against parry's Box2D-style `sweep_time_of_impact`, without
 //!   spin (where both follow the same path);
 //! * `pile/step`: one rapier step of `examples/pile.rs`'s pile, exact shapes with
@@ -22,9 +23,9 @@ mod support;
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
 use parry2d_f64::math::Pose;
 use parry2d_f64::query::{
-    sweep_time_of_impact, ContactManifold, DefaultQueryDispatcher, PersistentQueryDispatcher, QueryDispatcher, ToiProxy,
+    sweep_time_of_impact, DefaultQueryDispatcher, PersistentQueryDispatcher, QueryDispatcher, ToiProxy,
 };
-use parry2d_f64::shape::{Ball, Shape};
+use parry2d_f64::shape::Ball;
 use smooth_ccd2d::SmoothDispatcher;
 use std::time::Duration;
 use support::scenarios::ScenarioClass;
@@ -111,49 +112,43 @@ fn bench_distance(c: &mut Criterion) {
     }
 }
 
-type Manifolds = Vec<ContactManifold<(), ()>>;
-/// A resting contact: the case, its pose, parry's polygonal shapes and the prediction.
-type Resting = (Case, Pose, Box<dyn Shape>, Box<dyn Shape>, f64);
-
 fn bench_manifolds(c: &mut Criterion) {
+    use support::manifolds::{kinds, pairs_at, Manifolds, OVERLAPS};
     let d = SmoothDispatcher::default();
-    for class in ScenarioClass::ALL {
-        // Resting contacts: signed distance −1 % of the size, prediction 1 % of the size.
-        let set: Vec<Resting> = (0..BATCH as u64)
-            .filter_map(|seed| {
-                let c = Case::new(class, seed);
-                let size = c.s.size();
-                let p = c.pose_at_depth(-0.01 * size, &d)?;
-                let (a1, a2) = (
-                    support::parry_polygonal(&c.s.shape1),
-                    support::parry_polygonal(&c.s.shape2),
-                );
-                Some((c, p, a1, a2, 0.01 * size))
-            })
-            .collect();
-        let mut g = c.benchmark_group(format!("manifolds/{}", class.name()));
+    for kind in kinds() {
+        let mut g = c.benchmark_group(format!("manifolds/{}", kind.name));
         short(&mut g);
-        let param = format!("resting contacts ({})", set.len());
-        // The manifolds are kept between iterations (no allocation) and their points cleared
-        // before each call, so that every call recomputes them.
-        let mut mo: Vec<(Manifolds, _)> = set.iter().map(|_| (Vec::new(), None)).collect();
-        g.bench_function(BenchmarkId::new("ours", &param), |b| {
-            b.iter(|| {
-                for ((c, p, _, _, pred), (m, w)) in set.iter().zip(mo.iter_mut()) {
-                    m.iter_mut().for_each(|m| m.clear());
-                    let _ = black_box(d.contact_manifolds(p, &*c.g1, &*c.g2, *pred, m, w));
-                }
-            })
-        });
-        let mut mp: Vec<(Manifolds, _)> = set.iter().map(|_| (Vec::new(), None)).collect();
-        g.bench_function(BenchmarkId::new("parry-polygons", &param), |b| {
-            b.iter(|| {
-                for ((_, p, a1, a2, pred), (m, w)) in set.iter().zip(mp.iter_mut()) {
-                    m.iter_mut().for_each(|m| m.clear());
-                    let _ = black_box(DefaultQueryDispatcher.contact_manifolds(p, &**a1, &**a2, *pred, m, w));
-                }
-            })
-        });
+        for (label, depth) in OVERLAPS {
+            let set = pairs_at(&kind, depth, &d);
+            let param = format!("{label} ({})", set.len());
+            // The manifolds are kept between iterations (no allocation) and their points
+            // cleared before each call, so that every call recomputes them.
+            let mut mo: Vec<(Manifolds, _)> = set.iter().map(|_| (Vec::new(), None)).collect();
+            g.bench_function(BenchmarkId::new("ours", &param), |b| {
+                b.iter(|| {
+                    for (p, (m, w)) in set.iter().zip(mo.iter_mut()) {
+                        m.iter_mut().for_each(|m| m.clear());
+                        let _ = black_box(d.contact_manifolds(&p.pos12, &*p.g1, &*p.g2, p.prediction(), m, w));
+                    }
+                })
+            });
+            let mut mp: Vec<(Manifolds, _)> = set.iter().map(|_| (Vec::new(), None)).collect();
+            g.bench_function(BenchmarkId::new("parry-polygons", &param), |b| {
+                b.iter(|| {
+                    for (p, (m, w)) in set.iter().zip(mp.iter_mut()) {
+                        m.iter_mut().for_each(|m| m.clear());
+                        let _ = black_box(DefaultQueryDispatcher.contact_manifolds(
+                            &p.pos12,
+                            &*p.a1,
+                            &*p.a2,
+                            p.prediction(),
+                            m,
+                            w,
+                        ));
+                    }
+                })
+            });
+        }
         g.finish();
     }
 }

@@ -18,6 +18,7 @@ pub mod scenes;
 #[path = "../../tests/common/world.rs"]
 pub mod world;
 
+pub mod manifolds;
 pub mod native;
 pub mod pile;
 
@@ -92,7 +93,15 @@ impl Case {
             p.translation *= k;
             p
         };
-        let dist = |k: f64| -> Option<f64> { Some(d.signed_distance(&at(k), &*self.g1, &*self.g2)?.ok()?.distance) };
+        // The dispatcher's contact with prediction 0: the signed distance when overlapping,
+        // `None` (taken as +∞) when apart.
+        let dist = |k: f64| -> Option<f64> {
+            match d.contact(&at(k), &*self.g1, &*self.g2, 0.0) {
+                Ok(Some(c)) => Some(c.dist),
+                Ok(None) => Some(f64::INFINITY),
+                Err(_) => None,
+            }
+        };
         let (mut lo, mut hi) = (0.0, 1.0);
         if !(dist(hi)? > depth && dist(lo)? < depth) {
             return None;

@@ -29,12 +29,19 @@ pub struct Pile {
 impl Pile {
     /// The pile at rest before the first step; `exact`: this crate's shapes and dispatcher.
     pub fn new(exact: bool) -> Self {
+        Self::with(exact, true, true)
+    }
+
+    /// As [`Pile::new`], with rapier's contact recycling on or off and the dispatcher's warm
+    /// start on or off (exact shapes only).
+    pub fn with(exact: bool, recycling: bool, warm_start: bool) -> Self {
         let narrow_phase = if exact {
-            NarrowPhase::with_query_dispatcher(SmoothDispatcher::default())
+            NarrowPhase::with_query_dispatcher(SmoothDispatcher::default().with_warm_start(warm_start))
         } else {
             NarrowPhase::new()
         };
         let mut world = World::new(narrow_phase);
+        world.params.contact_recycling = recycling;
         let bodies = pile_bodies();
         if exact {
             insert_pile(&mut world, &bodies, PileShape::shared);

@@ -1,15 +1,17 @@
 //! The helper module of the examples (`#[path = "common/mod.rs"] mod common;`; `tests/figures.rs`
 //! reaches it through `examples/figures.rs`): the output folder, shape outlines, a hand-written
 //! SVG writer, and the files of `tests/common` the examples share with the tests, included as
-//! they are (`#[path]`): the rapier world ([`world`]) and its scenes ([`scenes`], with the RNG
-//! [`rng`]), the Appendix D scene ([`appendix_d`]), and the scenario generator ([`scenarios`],
-//! with its [`reference`]) that `examples/toi_timing.rs` times.
+//! they are (`#[path]`): the rapier world ([`world`]), its scenes ([`scenes`], with the RNG
+//! [`rng`]) and the resting scenes ([`resting`]), the Appendix D scene ([`appendix_d`]), and the
+//! scenario generator ([`scenarios`], with its [`reference`]) that `examples/toi_timing.rs` times.
 #![allow(dead_code)]
 
 #[path = "../../tests/common/appendix_d.rs"]
 pub mod appendix_d;
 #[path = "../../tests/common/reference.rs"]
 pub mod reference;
+#[path = "../../tests/common/resting.rs"]
+pub mod resting;
 #[path = "../../tests/common/rng.rs"]
 pub mod rng;
 #[path = "../../tests/common/scenarios.rs"]

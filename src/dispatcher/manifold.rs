@@ -3,15 +3,25 @@
 //! rapier's narrow phase asks its dispatcher for *contact manifolds* (the persistent contact
 //! points the solver works on), not for single contacts. This module builds them:
 //!
-//! * **Pairs the dispatcher answers itself** (see [`crate::dispatcher`]): the manifold comes from
-//!   the exact stationary distance ([`SmoothDispatcher::signed_distance`]). Such a pair has a
+//! * **Pairs of this crate's shapes with polygons, discs, ellipses and `CapsuleEllipse`s**
+//!   (parry's boxes, polygons, triangles, segments, capsules and their round versions included,
+//!   read in place by [`super::support_shape`]): the exact contact query
+//!   ([`crate::query::contact`], docs/theory.md § 13) — the signed distance as the minimum of a
+//!   support function over the merged breakpoints of both shapes, exact shallow or deep, with two
+//!   points where a face faces a face (the incident face clipped to the reference face, feature
+//!   ids that do not depend on which face is the reference) and one point elsewhere. Its search
+//!   starts from the normal of the manifold rapier hands back ([`SmoothDispatcher::warm_start`]);
+//!   the answer does not depend on it.
+//! * **Other pairs the dispatcher answers itself** (see [`crate::dispatcher`]: a user's curve, a
+//!   polygon of more than 16 vertices, and any pair whose exact contact failed): the manifold
+//!   comes from the exact stationary distance ([`SmoothDispatcher::signed_distance`]). Such a pair has a
 //!   strictly convex side, so the contact is a single point, added when the signed distance is
 //!   at most the prediction distance. The one exception is a half-space against a curve with a
 //!   flat piece (a [`crate::RoundedPolygon`] edge, the segment of a [`crate::CapsuleEllipse`])
 //!   facing it within [`FLAT_FEATURE_MAX_ANGLE`]: the manifold then has two points, the ends of
 //!   the flat piece (the end nearer the plane replaced by the support point once the support
 //!   point has left the piece), each with its exact distance, so that a body can rest on a flat
-//!   side. Pairs where neither side is strictly convex (e.g. a rounded polygon on a box) are
+//!   side. Pairs where neither side is strictly convex and the exact contact does not apply are
 //!   parry's, which clips the shapes' polygonal features and returns up to two points; where
 //!   parry's manifold comes back empty for shapes its distance puts within the prediction
 //!   (nearly touching parallel faces, where GJK/EPA give up), it is computed on the shapes pushed
@@ -25,7 +35,8 @@
 //!
 //! # Feature ids (warm starting)
 //!
-//! rapier transfers the previous step's impulses to a new contact with the same pair of
+//! The exact contact query's ids are described in [`crate::query::contact`]. For the other
+//! pairs: rapier transfers the previous step's impulses to a new contact with the same pair of
 //! feature ids. The id of a contact on a curve is derived from the piece of the curve (between
 //! breakpoints, see [`ConvexCurve::breakpoints`]) that holds the witness point: `face(k)` when
 //! piece k is flat, `vertex(2k)` when it is curved (a smooth curve such as an ellipse has one
@@ -41,10 +52,12 @@
 use super::input_guard;
 use super::parry_fallback::{pair_size, parry_within, pushed_together, TOUCH_PUSH};
 use super::route::{own_curve, route, RouteScratch};
+use super::support_shape::{support_shape, SupportScratch};
 use crate::curve::pieces::{flat_pieces, piece_index, piece_is_flat};
 use crate::curve::ConvexCurve;
 use crate::numerics::math::{Pose, Real, Vector};
 use crate::parry_shape::FLAT_FEATURE_MAX_ANGLE;
+use crate::query::contact::{contact, Contact, Feature};
 use crate::query::stationary::StationaryDistance;
 use crate::SmoothDispatcher;
 use parry2d_f64::query::details::{
@@ -206,6 +219,47 @@ fn manifold_from_distance<M, C: Default + Copy>(
     manifold.match_contacts(&old_points);
 }
 
+/// Fills `manifold` from the exact contact of a pair of polygonal shapes, or of one with an
+/// ellipse or a `CapsuleEllipse` ([`crate::query::contact`]): its one or two points within the
+/// prediction, their ids kept from the previous points (rapier's warm start). False, with the
+/// manifold left as it was, when a point is not finite in body 2's frame.
+fn manifold_from_contact<M, C: Default + Copy>(
+    pos12: &Pose,
+    c: &Contact,
+    prediction: Real,
+    manifold: &mut ContactManifold<M, C>,
+) -> bool {
+    let local2 = |p: Vector| pos12.inverse_transform_point(p);
+    let n2 = pos12.inverse_transform_vector(-c.normal);
+    if !(n2.is_finite() && c.points[..c.len].iter().all(|p| local2(p.point2).is_finite())) {
+        return false;
+    }
+    let unknown = PackedFeatureId::UNKNOWN;
+    let mut old = [TrackedContact::<C>::new(Vector::ZERO, Vector::ZERO, unknown, unknown, 0.0); 4];
+    let n_old = manifold.points.len().min(old.len());
+    old[..n_old].copy_from_slice(&manifold.points[..n_old]);
+    manifold.clear();
+    manifold.local_n1 = c.normal;
+    manifold.local_n2 = n2;
+    let fid = |f: Feature| match f {
+        Feature::Face(k) => PackedFeatureId::face(k),
+        Feature::Vertex(k) => PackedFeatureId::vertex(k),
+    };
+    for p in &c.points[..c.len] {
+        if p.dist <= prediction {
+            manifold.points.push(TrackedContact::new(
+                p.point1,
+                local2(p.point2),
+                fid(p.feature1),
+                fid(p.feature2),
+                p.dist,
+            ));
+        }
+    }
+    manifold.match_contacts(&old[..n_old]);
+    true
+}
+
 /// Whether one side is a shape parry decomposes (composite, trimesh, heightfield, voxels).
 fn is_composite_like(g: &dyn Shape) -> bool {
     g.as_composite_shape().is_some()
@@ -262,6 +316,18 @@ where
         if ours && far_apart(pos12, g1, g2, prediction) {
             manifold.clear();
             return Ok(());
+        }
+        let unconstrained = normal_constraints1.is_none() && normal_constraints2.is_none();
+        if ours && unconstrained && input_guard::pose_ok(pos12) {
+            let (mut st1, mut st2) = (SupportScratch::default(), SupportScratch::default());
+            if let (Some(s1), Some(s2)) = (support_shape(g1, &mut st1), support_shape(g2, &mut st2)) {
+                let hint = Some(manifold.local_n1).filter(|n| self.warm_start && n.is_finite() && *n != Vector::ZERO);
+                if let Some(c) = contact(s1, s2, pos12, FLAT_FEATURE_MAX_ANGLE.cos(), hint) {
+                    if manifold_from_contact(pos12, &c, prediction, manifold) {
+                        return Ok(());
+                    }
+                }
+            }
         }
         // Route once: parry shapes are converted to curves a single time per query.
         let mut scratch = RouteScratch::default();

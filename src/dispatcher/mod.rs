@@ -64,6 +64,7 @@ pub(crate) mod parry_fallback;
 mod queries;
 pub(crate) mod route;
 pub(crate) mod start_contact;
+mod support_shape;
 
 pub use cast::shape_time_of_impact;
 pub use start_contact::StartContactPolicy;
@@ -90,7 +91,7 @@ use route::{pair_distance, route, Route, RouteScratch};
 /// let plain = SmoothDispatcher::default().with_start_contact(StartContactPolicy::Plain);
 /// assert_eq!(plain.start_contact, StartContactPolicy::Plain);
 /// ```
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug)]
 #[non_exhaustive]
 pub struct SmoothDispatcher {
     /// Options of the stationary distance (distance, contact, closest points, intersection).
@@ -100,6 +101,21 @@ pub struct SmoothDispatcher {
     /// What `cast_shapes_nonlinear` answers with `stop_at_penetration = false` for shapes in
     /// contact at the start (default: rapier's allowance rule).
     pub start_contact: StartContactPolicy,
+    /// Whether a contact manifold's computation starts from the normal of the manifold rapier
+    /// hands back (default true). The answer is the same either way (the same certificate of
+    /// global optimality; `tests/warm_start.rs`); only pairs with two curved sides go faster.
+    pub warm_start: bool,
+}
+
+impl Default for SmoothDispatcher {
+    fn default() -> Self {
+        Self {
+            distance_options: DistanceOptions::default(),
+            toi_options: ToiOptions::default(),
+            start_contact: StartContactPolicy::default(),
+            warm_start: true,
+        }
+    }
 }
 
 impl SmoothDispatcher {
@@ -124,6 +140,12 @@ impl SmoothDispatcher {
     /// `stop_at_penetration` of a cast still come from its caller).
     pub fn with_toi_options(mut self, options: ToiOptions) -> Self {
         self.toi_options = options;
+        self
+    }
+
+    /// The same dispatcher with contact manifolds warm-started (`true`, the default) or not.
+    pub fn with_warm_start(mut self, warm_start: bool) -> Self {
+        self.warm_start = warm_start;
         self
     }
 

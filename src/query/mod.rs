@@ -3,6 +3,7 @@
 //! strictly convex side, `gap` without one, what their step loops share in `stepping`), and both
 //! against a half-space.
 
+pub(crate) mod contact;
 pub(crate) mod gap;
 pub(crate) mod halfspace;
 pub(crate) mod pair;

@@ -6,6 +6,7 @@
 //! * [`scenarios`]: deterministic random time-of-impact scenarios, and `par_map`;
 //! * [`world`]: a rapier world to step, and a hash of its state;
 //! * [`scenes`]: the rapier scenes (the mixed pile, the box pile, the wall shots);
+//! * [`resting`]: resting quality — two stacks and a slope, exact and parry variants, the pile at rest;
 //! * [`appendix_d`]: the specification's Appendix D scene.
 //!
 //! `tests/reliability` (the fuzz generator of `tests/adversarial.rs`, `tests/golden.rs` and
@@ -14,6 +15,7 @@
 
 pub mod appendix_d;
 pub mod reference;
+pub mod resting;
 pub mod rng;
 pub mod scenarios;
 pub mod scenes;

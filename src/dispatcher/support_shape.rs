@@ -1,0 +1,134 @@
+//! A shape as the exact contact query sees it ([`SupportShape`]): this crate's ellipses,
+//! rounded polygons and capsule-ellipses, parry's discs, boxes, polygons, triangles, segments and
+//! capsules (round or not) — read in place, or with their few vertices and normals written to a
+//! caller's [`SupportScratch`] on the stack. No curve is built.
+
+use crate::numerics::math::{cross, perp, Vector};
+use crate::query::contact::SupportShape;
+use crate::{CapsuleEllipse, Ellipse, RoundedPolygon};
+use parry2d_f64::shape::{
+    Ball, Capsule, ConvexPolygon, Cuboid, RoundConvexPolygon, RoundCuboid, RoundTriangle, Segment, Shape, ShapeType,
+    Triangle,
+};
+
+/// Stack room for the vertices and normals of a parry box, triangle, segment or capsule.
+#[derive(Default)]
+pub(crate) struct SupportScratch {
+    vertices: [Vector; 4],
+    normals: [Vector; 4],
+}
+
+impl SupportScratch {
+    /// The polygon with these vertices (counter-clockwise) and radius, normals computed here;
+    /// `None` for a degenerate edge, a non-finite vertex or a bad radius.
+    fn polygon(&mut self, v: &[Vector], radius: f64) -> Option<SupportShape<'_>> {
+        let n = v.len();
+        if !(radius.is_finite() && radius >= 0.0) {
+            return None;
+        }
+        for i in 0..n {
+            let e = v[(i + 1) % n] - v[i];
+            let len = e.length();
+            if !(len > 0.0 && len.is_finite()) {
+                return None;
+            }
+            self.vertices[i] = v[i];
+            self.normals[i] = -perp(e) / len;
+        }
+        Some(SupportShape::Polygon {
+            vertices: &self.vertices[..n],
+            normals: &self.normals[..n],
+            radius,
+        })
+    }
+}
+
+/// A triangle's vertices counter-clockwise; `None` when it is flat (or not finite).
+fn ccw(t: &Triangle) -> Option<[Vector; 3]> {
+    let area2 = cross(t.b - t.a, t.c - t.a);
+    let size2 = (t.b - t.a).length_squared().max((t.c - t.a).length_squared());
+    // False for NaN as well.
+    let fat = area2.abs() > 1e-12 * size2;
+    if !fat {
+        return None;
+    }
+    Some(if area2 > 0.0 { [t.a, t.b, t.c] } else { [t.a, t.c, t.b] })
+}
+
+/// A polygon stored with its normals (this crate's or parry's), unless a value is not finite
+/// or the radius is negative.
+fn stored<'a>(vertices: &'a [Vector], normals: &'a [Vector], radius: f64) -> Option<SupportShape<'a>> {
+    let ok = radius.is_finite()
+        && radius >= 0.0
+        && vertices.len() >= 2
+        && vertices.iter().chain(normals).all(|v| v.is_finite());
+    ok.then_some(SupportShape::Polygon {
+        vertices,
+        normals,
+        radius,
+    })
+}
+
+/// The shape as the contact query sees it; `None` for any other shape (a user's curve, a
+/// half-space, a composite) or invalid parameters.
+pub(crate) fn support_shape<'a>(s: &'a dyn Shape, scratch: &'a mut SupportScratch) -> Option<SupportShape<'a>> {
+    let box_ok = |c: &Cuboid| c.half_extents.x > 0.0 && c.half_extents.y > 0.0 && c.half_extents.is_finite();
+    let box_of = |c: &Cuboid| {
+        let h = c.half_extents;
+        [
+            Vector::new(-h.x, -h.y),
+            Vector::new(h.x, -h.y),
+            Vector::new(h.x, h.y),
+            Vector::new(-h.x, h.y),
+        ]
+    };
+    match s.shape_type() {
+        ShapeType::Custom => {
+            if let Some(e) = s.as_shape::<Ellipse>() {
+                Some(SupportShape::Ellipse(e.half_x(), e.half_y()))
+            } else if let Some(p) = s.as_shape::<RoundedPolygon>() {
+                stored(p.vertices(), p.edge_normals(), p.corner_radius())
+            } else {
+                let (r1, r2, r3) = s.as_shape::<CapsuleEllipse>()?.params();
+                Some(SupportShape::CapsuleEllipse(r1, r2, r3))
+            }
+        }
+        ShapeType::Ball => {
+            let r = s.as_shape::<Ball>()?.radius;
+            (r.is_finite() && r > 0.0).then_some(SupportShape::Disc(r))
+        }
+        ShapeType::Cuboid => {
+            let c = s.as_shape::<Cuboid>()?;
+            box_ok(c).then(|| scratch.polygon(&box_of(c), 0.0)).flatten()
+        }
+        ShapeType::RoundCuboid => {
+            let c = s.as_shape::<RoundCuboid>()?;
+            let inner = &c.inner_shape;
+            box_ok(inner)
+                .then(|| scratch.polygon(&box_of(inner), c.border_radius))
+                .flatten()
+        }
+        ShapeType::ConvexPolygon => {
+            let p = s.as_shape::<ConvexPolygon>()?;
+            stored(p.points(), p.normals(), 0.0)
+        }
+        ShapeType::RoundConvexPolygon => {
+            let p = s.as_shape::<RoundConvexPolygon>()?;
+            stored(p.inner_shape.points(), p.inner_shape.normals(), p.border_radius)
+        }
+        ShapeType::Triangle => scratch.polygon(&ccw(s.as_shape::<Triangle>()?)?, 0.0),
+        ShapeType::RoundTriangle => {
+            let t = s.as_shape::<RoundTriangle>()?;
+            scratch.polygon(&ccw(&t.inner_shape)?, t.border_radius)
+        }
+        ShapeType::Segment => {
+            let sg = s.as_shape::<Segment>()?;
+            scratch.polygon(&[sg.a, sg.b], 0.0)
+        }
+        ShapeType::Capsule => {
+            let c = s.as_shape::<Capsule>()?;
+            scratch.polygon(&[c.segment.a, c.segment.b], c.radius)
+        }
+        _ => None,
+    }
+}

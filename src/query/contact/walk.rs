@@ -1,0 +1,389 @@
+//! The minimum of F(n) = h₁(n) + h₂(−n) over directions, walking the merged breakpoints of both
+//! sides (see the folder's module docs for why it is exact).
+
+use super::arc::Arc;
+use super::feet::{middle_feet, nearest_feet, Feet};
+use super::side::{Axes, Placed, MAX_BREAKPOINTS};
+use super::two_ellipses::TwoEllipses;
+use crate::numerics::math::{cross, perp, Vector};
+
+/// A breakpoint of the merged walk: the side it belongs to (0 or 1), its index there, the pieces
+/// active just after it and F there.
+#[derive(Copy, Clone, Debug)]
+pub(crate) struct Entry {
+    /// F at the breakpoint.
+    pub value: f64,
+    pub side: u8,
+    pub index: u8,
+    /// The indices of the pieces active just after the breakpoint (side 0, side 1).
+    pub active: [u8; 2],
+}
+
+impl Entry {
+    /// The side it belongs to.
+    #[inline]
+    pub(crate) fn side(&self) -> usize {
+        self.side as usize
+    }
+    /// Its index on its side.
+    #[inline]
+    pub(crate) fn index(&self) -> usize {
+        self.index as usize
+    }
+}
+
+/// Where the minimum is.
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub(crate) enum At {
+    /// At merged breakpoint i.
+    Breakpoint(usize),
+    /// Inside the arc after merged breakpoint i (`usize::MAX`: the whole circle, no breakpoint).
+    Inside(usize),
+}
+
+/// The minimum of F.
+#[derive(Copy, Clone, Debug)]
+pub(crate) struct Minimum {
+    pub value: f64,
+    /// The minimising direction (body 1's frame, from body 1 towards body 2).
+    pub normal: Vector,
+    pub at: At,
+    /// The indices of the pieces active at the minimum (side 0, side 1).
+    pub active: [usize; 2],
+}
+
+/// Breakpoint values within this fraction of the largest |F| at a breakpoint of the best one
+/// count as ties for the separated shortcut of [`Walk::minimum`] (rounding only; the shortcut
+/// then looks at a few more arcs, never fewer).
+const TIE: f64 = 1e-9;
+
+/// Which half-turn from `s` the unit direction `n` lies in (0: [0, π), 1: [π, 2π)).
+#[inline]
+fn half(s: Vector, n: Vector) -> u8 {
+    let c = cross(s, n);
+    u8::from(!(c > 0.0 || (c == 0.0 && s.dot(n) > 0.0)))
+}
+
+/// Whether `a` comes before `b` counter-clockwise from `s` (their halves `ha`, `hb`).
+#[inline]
+fn before(ha: u8, a: Vector, hb: u8, b: Vector) -> bool {
+    ha < hb || (ha == hb && cross(a, b) > 0.0)
+}
+
+/// The merged walk of two placed sides.
+pub(crate) struct Walk<'a> {
+    pub sides: [&'a Placed; 2],
+    pub entries: [Entry; 2 * MAX_BREAKPOINTS],
+    pub len: usize,
+    /// Where the search of an arc between two ellipses starts, if it is lower there.
+    pub hint: Option<Vector>,
+}
+
+impl<'a> Walk<'a> {
+    /// Merges the breakpoints of both sides counter-clockwise and evaluates F at each.
+    #[inline(always)]
+    pub(crate) fn new(s0: &'a Placed, s1: &'a Placed) -> Self {
+        let sides = [s0, s1];
+        let start = if s0.len > 0 {
+            s0.normals[0]
+        } else if s1.len > 0 {
+            s1.normals[0]
+        } else {
+            Vector::X
+        };
+        let blank = Entry {
+            value: 0.0,
+            side: 0,
+            index: 0,
+            active: [0, 0],
+        };
+        let mut w = Walk {
+            sides,
+            entries: [blank; 2 * MAX_BREAKPOINTS],
+            len: 0,
+            hint: None,
+        };
+        // Each side's breakpoints from the first after `start` on (they are cyclically sorted).
+        let mut first = [0usize; 2];
+        let mut halves = [[0u8; MAX_BREAKPOINTS]; 2];
+        for (s, side) in sides.iter().enumerate() {
+            for k in 0..side.len {
+                halves[s][k] = half(start, side.normals[k]);
+                let f = first[s];
+                if k > 0 && before(halves[s][k], side.normals[k], halves[s][f], side.normals[f]) {
+                    first[s] = k;
+                }
+            }
+        }
+        let prev = |s: &Placed, k: usize| (if k == 0 { s.len.max(1) - 1 } else { k - 1 }) as u8;
+        let mut active = [prev(s0, first[0]), prev(s1, first[1])];
+        let (mut i0, mut i1) = (0, 0);
+        while i0 < s0.len || i1 < s1.len {
+            let k0 = wrap(first[0] + i0, s0.len);
+            let k1 = wrap(first[1] + i1, s1.len);
+            let take0 =
+                i1 >= s1.len || (i0 < s0.len && !before(halves[1][k1], s1.normals[k1], halves[0][k0], s0.normals[k0]));
+            let (side, k) = if take0 { (0, k0) } else { (1, k1) };
+            if take0 {
+                i0 += 1;
+            } else {
+                i1 += 1;
+            }
+            active[side] = k as u8;
+            let value = w.value([active[0] as usize, active[1] as usize], sides[side].normals[k]);
+            w.entries[w.len] = Entry {
+                value,
+                side: side as u8,
+                index: k as u8,
+                active,
+            };
+            w.len += 1;
+        }
+        w
+    }
+
+    /// The indices of the pieces active after merged breakpoint i (the only pieces with no
+    /// breakpoint).
+    #[inline]
+    pub(crate) fn active(&self, i: usize) -> [usize; 2] {
+        if self.len == 0 {
+            return [0, 0];
+        }
+        let a = self.entries[i].active;
+        [a[0] as usize, a[1] as usize]
+    }
+
+    /// The direction of merged breakpoint i.
+    #[inline]
+    pub(crate) fn normal(&self, i: usize) -> Vector {
+        let e = &self.entries[i];
+        self.sides[e.side()].normals[e.index()]
+    }
+
+    /// F at n on the pieces `p`.
+    #[inline]
+    pub(crate) fn value(&self, p: [usize; 2], n: Vector) -> f64 {
+        self.sides[0].value(p[0], n) + self.sides[1].value(p[1], n)
+    }
+
+    /// The linear coefficient and the radius of F on the pieces `p`.
+    #[inline]
+    fn linear(&self, p: [usize; 2]) -> (Vector, f64) {
+        let [s0, s1] = self.sides;
+        (s0.q[p[0]] + s1.q[p[1]], s0.r[p[0]] + s1.r[p[1]])
+    }
+
+    /// The arc after merged breakpoint i: its end directions, or `None` when it is empty (two
+    /// breakpoints in the same direction). With no breakpoint, the whole circle.
+    fn arc(&self, i: usize) -> Option<Arc> {
+        if self.len == 0 {
+            return Some(Arc::Full);
+        }
+        let (a, b) = (self.normal(i), self.normal(wrap(i + 1, self.len)));
+        let empty = self.len > 1 && cross(a, b) == 0.0 && a.dot(b) > 0.0;
+        (!empty).then_some(Arc::Between(a, b))
+    }
+
+    /// A lower bound of F over `arc` on the pieces `p` (one an ellipse with axes `ax`): the
+    /// minimum of the linear part plus the minimum of k over the arc, each exact.
+    fn lower_bound(&self, arc: Arc, p: [usize; 2], ax: &Axes) -> f64 {
+        let (q, r) = self.linear(p);
+        let lin = match arc {
+            Arc::Full => -q.length(),
+            Arc::Between(a, b) if arc.contains(-q) => {
+                let _ = (a, b);
+                -q.length()
+            }
+            Arc::Between(a, b) => q.dot(a).min(q.dot(b)),
+        };
+        let minor = if ax.a >= ax.b { ax.w } else { ax.u };
+        let k = match arc {
+            Arc::Between(a, b) if !(arc.contains(minor) || arc.contains(-minor)) => ax.k(a).min(ax.k(b)),
+            _ => ax.a.min(ax.b),
+        };
+        lin + k + r
+    }
+
+    /// The minimum of F over every direction. `None` when both pieces of an arc are ellipses or
+    /// a value is not finite.
+    pub(crate) fn minimum(&self) -> Option<Minimum> {
+        let mut best: Option<Minimum> = None;
+        let mut scale = 0.0f64;
+        for (i, e) in self.entries[..self.len].iter().enumerate() {
+            scale = scale.max(e.value.abs());
+            let m = Minimum {
+                value: e.value,
+                normal: self.normal(i),
+                at: At::Breakpoint(i),
+                active: self.active(i),
+            };
+            if !keep(&mut best, m) {
+                return None;
+            }
+        }
+        // Apart along a breakpoint's direction: the separation −F is concave where positive, so
+        // the maximum is next to the best breakpoint (or to one tied with it).
+        let cut = best.map(|b| b.value + TIE * scale);
+        let separated = best.is_some_and(|b| b.value < 0.0);
+        for i in 0..self.len.max(1) {
+            if separated {
+                let next = wrap(i + 1, self.len);
+                let near = |j: usize| cut.is_some_and(|c| self.entries[j].value <= c);
+                if !(near(i) || near(next)) {
+                    continue;
+                }
+            }
+            let Some(arc) = self.arc(i) else { continue };
+            let at = if self.len == 0 {
+                At::Inside(usize::MAX)
+            } else {
+                At::Inside(i)
+            };
+            let p = self.active(i);
+            if !self.arc_minimum(&mut best, arc, p, at) {
+                return None;
+            }
+        }
+        best
+    }
+
+    /// Keeps in `best` the interior minimum of F over `arc` on the pieces `p`, if lower; false
+    /// for two ellipse pieces.
+    fn arc_minimum(&self, best: &mut Option<Minimum>, arc: Arc, p: [usize; 2], at: At) -> bool {
+        let [s0, s1] = self.sides;
+        let ax = match (s0.is_ellipse(p[0]), s1.is_ellipse(p[1])) {
+            (true, true) => {
+                let (Some(e1), Some(e2)) = (s0.axes, s1.axes) else {
+                    return false;
+                };
+                let (q, r) = self.linear(p);
+                let (a, b) = match arc {
+                    Arc::Between(a, b) => (a, b),
+                    Arc::Full => (Vector::X, Vector::X),
+                };
+                let cut = best.map_or(f64::INFINITY, |b| b.value);
+                return match (TwoEllipses { q, r, e1, e2 }).minimum(a, b, cut, self.hint) {
+                    None => false,
+                    Some(found) => {
+                        if let Some((_, n)) = found {
+                            keep(best, self.minimum_at(p, n, at));
+                        }
+                        true
+                    }
+                };
+            }
+            (true, false) => s0.axes,
+            (false, true) => s1.axes,
+            (false, false) => None,
+        };
+        let (q, _) = self.linear(p);
+        match ax {
+            None => {
+                // F = q·n + r: its minimum r − |q| is at n = −q/|q| when that is in the arc.
+                let ql = q.length();
+                if ql > 0.0 && arc.contains(-q) {
+                    let n = -q / ql;
+                    keep(best, self.minimum_at(p, n, at));
+                } else if arc == Arc::Full {
+                    // Two concentric discs: any direction.
+                    keep(best, self.minimum_at(p, Vector::X, at));
+                }
+            }
+            Some(ax) => {
+                if best.is_some_and(|b| self.lower_bound(arc, p, &ax) > b.value) {
+                    return true;
+                }
+                if let (Arc::Between(a, b), At::Inside(i)) = (arc, at) {
+                    if self.convex_with_end_minimum(i, a, b, p, &ax) {
+                        return true;
+                    }
+                }
+                // F − r is the support function of the ellipse centred at q: its stationary
+                // directions are the normals at the feet of −q.
+                let pl = ax.local(-q);
+                let try_feet = |best: &mut Option<Minimum>, feet: &Feet| {
+                    let mut any = false;
+                    for f in feet.as_slice() {
+                        let n = ax.world(f.normal);
+                        if arc.contains(n) {
+                            any = true;
+                            keep(best, self.minimum_at(p, n, at));
+                        }
+                    }
+                    any
+                };
+                // The nearest foot is the minimum over every direction: when it is in the arc,
+                // it is the arc's; otherwise the arc's is at an end or a middle foot.
+                if !try_feet(best, &nearest_feet(ax.a, ax.b, pl)) {
+                    try_feet(best, &middle_feet(ax.a, ax.b, pl));
+                }
+            }
+        }
+        true
+    }
+
+    /// Whether F is convex on arc i (ends `a`, `b`, pieces `p`, one the ellipse `ax`) with its
+    /// minimum there at an end, so that the arc has no interior minimum.
+    ///
+    /// F is the support function of the Minkowski difference D, so F″ + F = ρ_D, D's radius of
+    /// curvature, which on the arc is at least ρ_E (the ellipse's, ≥ min(a, b)²/max(a, b)) plus
+    /// the vertex's radius r. F is sublinear, so on an arc of width θ < π it is at most
+    /// max(F(a), F(b))/cos(θ/2) (or that maximum, when negative). When that bound is at most
+    /// ρ_E,min + r, F″ ≥ 0 on the arc: F is convex there, and its minimum is inside only if
+    /// F′ < 0 at the start and > 0 at the end (F′(n) = (q + s_E(n))·n⊥, s_E the support point of
+    /// the centred ellipse).
+    fn convex_with_end_minimum(&self, i: usize, a: Vector, b: Vector, p: [usize; 2], ax: &Axes) -> bool {
+        let cos = a.dot(b);
+        let narrower_than_pi = cos > -1.0;
+        if !narrower_than_pi || self.len < 2 {
+            return false;
+        }
+        let top = self.entries[i].value.max(self.entries[wrap(i + 1, self.len)].value);
+        let bound = if top > 0.0 {
+            top / (0.5 * (1.0 + cos)).sqrt()
+        } else {
+            top
+        };
+        let (q, r) = self.linear(p);
+        let (lo, hi) = if ax.a < ax.b { (ax.a, ax.b) } else { (ax.b, ax.a) };
+        let convex = bound <= lo * lo / hi + r;
+        if !convex {
+            return false;
+        }
+        let slope = |n: Vector| (q + ax.support(n)).dot(perp(n));
+        slope(a) >= 0.0 || slope(b) <= 0.0
+    }
+
+    /// F at direction n on the pieces `p`, as a candidate minimum.
+    #[inline]
+    fn minimum_at(&self, p: [usize; 2], n: Vector, at: At) -> Minimum {
+        Minimum {
+            value: self.value(p, n),
+            normal: n,
+            at,
+            active: p,
+        }
+    }
+}
+
+/// `k` reduced into 0..n for k < 2n (an index one lap past the end), without a division.
+#[inline]
+pub(crate) fn wrap(k: usize, n: usize) -> usize {
+    if k >= n {
+        k - n
+    } else {
+        k
+    }
+}
+
+/// Keeps `m` in `best` when it is lower; false when its value is not finite.
+#[inline]
+fn keep(best: &mut Option<Minimum>, m: Minimum) -> bool {
+    if !m.value.is_finite() {
+        return false;
+    }
+    if best.is_none_or(|b| m.value < b.value) {
+        *best = Some(m);
+    }
+    true
+}
