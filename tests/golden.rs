@@ -39,25 +39,27 @@ const FUZZ_CASES: u64 = 40_000;
 /// with issue 18: the contact manifolds of every pair of this crate's shapes with polygons,
 /// discs, ellipses and `CapsuleEllipse`s come from the exact contact query (`query::contact`:
 /// other witnesses on flat pieces, two points where faces face each other, other feature ids);
-/// every class holds such manifolds.
+/// every class holds such manifolds. Re-recorded again within issue 18 when the nearest foot's
+/// Newton start moved to the point's own multiplier and the search skipped more arcs (the same
+/// minima to rounding: `grazing`, `thin-ellipse` and `touching-at-t0` kept their digests).
 const FUZZ_DIGESTS: [(&str, u64); 9] = [
-    ("coincident", 0x7C9B450827F55615),
-    ("concentric", 0x41034E3A5AECD7B5),
-    ("extreme-scale", 0xBC9682894C122657),
+    ("coincident", 0xC3B60539C185FE41),
+    ("concentric", 0xB52A2331F8903E93),
+    ("extreme-scale", 0xB15953AD7F659AEB),
     ("grazing", 0x78EC7CCCBD83C215),
-    ("parry-pair", 0x4C5CF121E71D935F),
-    ("random", 0x6F2AC873CB35D322),
+    ("parry-pair", 0x4058A44999047E18),
+    ("random", 0x649FAD4559BC707C),
     ("thin-ellipse", 0x1194EF1A359927E3),
     ("touching-at-t0", 0xF1EBFEEED6E41242),
-    ("wild", 0x8E316460C224F2B6),
+    ("wild", 0xDEE62C0CC1DBAA47),
 ];
 
 /// Final-state hash of the rapier scene (re-recorded with issue 17: the CCD casts between its
 /// rounded polygons and capsule-ellipses are the crate's; 0x97F3_2395_5B85_4751 before, then
 /// 0x14D9_C197_0B12_3749 until the guard's root search changed as above; the other two guard
 /// changes left it as it is; 0xFA5A_CB28_D16D_CAFD until issue 18 gave the pile's contacts
-/// the exact contact query).
-const RAPIER_STATE: u64 = 0x826D_5A8D_B06F_43B8;
+/// the exact contact query, and 0x826D_5A8D_B06F_43B8 before its search skipped more arcs).
+const RAPIER_STATE: u64 = 0x8567_A3FB_7AF1_1BF1;
 
 /// FNV-1a of a sequence of words.
 fn fnv(words: impl IntoIterator<Item = u64>) -> u64 {

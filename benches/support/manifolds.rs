@@ -3,7 +3,8 @@
 //! against a rounded polygon, and the Appendix D heptagon against its ellipse), each pair at a
 //! resting overlap (signed distance −1 % of the size) and a deep one (−10 %), prediction 1 % of
 //! the size; this crate's `contact_manifolds` on the exact shapes against parry's on its polygonal
-//! stand-ins ([`super::parry_polygonal`]).
+//! stand-ins ([`super::parry_polygonal`]). `MANIFOLD_KIND=<part of a name>` in the environment
+//! restricts the ratio table to the kinds whose name contains it.
 
 use super::reference::reference_distance;
 use super::rng::Rng;
@@ -258,7 +259,11 @@ pub fn table() {
     );
     println!("| pair kind | overlap | n | ours median µs | parry median µs | ratio of medians | ratio of p90s | per-pair ratio median | worst depth error/size ours | parry | median depth error/size parry |");
     println!("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
+    let only = std::env::var("MANIFOLD_KIND").ok();
     for kind in kinds() {
+        if only.as_ref().is_some_and(|o| !kind.name.contains(o.as_str())) {
+            continue;
+        }
         for (label, depth) in OVERLAPS {
             let set = pairs_at(&kind, depth, &d);
             let row = time_pairs(&set, &d);

@@ -159,9 +159,19 @@ pub(crate) fn nearest_feet(a: f64, b: f64, p: Vector) -> Feet {
             let (p0, p1) = (r0 * z0 / (v + rm1), z1 / v);
             (p0 * p0 + p1 * p1 - 1.0, -2.0 * (p0 * p0 / (v + rm1) + p1 * p1 / v))
         };
-        // G ≥ 0 at both starts (one of the two terms is ≥ 1 there).
-        let v0 = z1.max(r0 * z0 - rm1);
+        // G ≥ 0 at v_lo (one of the two terms is ≥ 1 there). The start is v = 1 (t = 0, the
+        // point on the ellipse) when G(1) ≥ 0 (the point outside), else one Newton step from
+        // it, which lands left of the root (G is convex) but not below v_lo: near the ellipse —
+        // a resting contact — a few steps then suffice.
+        let v_lo = z1.max(r0 * z0 - rm1);
         let hi = ((r0 * z0) * (r0 * z0) + z1 * z1).sqrt();
+        let (g1, d1) = g(1.0);
+        let v0 = if g1 >= 0.0 {
+            1.0f64.max(v_lo)
+        } else {
+            (1.0 - g1 / d1).max(v_lo)
+        };
+        let v0 = if v0.is_finite() { v0.min(hi) } else { v_lo };
         let v = newton_increasing(v0, hi.max(v0), g);
         f.push(&mut out, r0 * x0 / (v + rm1), y0 / v, false, false);
     } else if y0 > 0.0 {

@@ -230,7 +230,7 @@ impl TwoEllipses {
                 continue;
             }
             let lower = pm.f - pm.df.abs() * h + 0.5 * mu * h * h;
-            if lower > bound {
+            if lower > bound || self.termwise_bound(&pa, &pb) > bound {
                 continue;
             }
             if top + 2 > stack.len() {
@@ -241,6 +241,27 @@ impl TwoEllipses {
             top += 2;
         }
         Some(found.filter(|f| f.0 < best))
+    }
+
+    /// A first-order lower bound of F on the sub-arc (pa, pb): the minimum of each term (q·n,
+    /// k₁, k₂) over it, each exact (the smallest k at the minor axis's normal when it is in
+    /// the sub-arc, else at an end; q·n at −q when it is in it, else at an end).
+    fn termwise_bound(&self, pa: &Point, pb: &Point) -> f64 {
+        let inside = |d: Vector| cross(pa.n, d) >= 0.0 && cross(d, pb.n) >= 0.0;
+        let lin = if inside(-self.q) {
+            -self.q.length()
+        } else {
+            self.q.dot(pa.n).min(self.q.dot(pb.n))
+        };
+        let kmin = |e: &Axes, i: usize| {
+            let minor = if e.a >= e.b { e.w } else { e.u };
+            if inside(minor) || inside(-minor) {
+                e.a.min(e.b)
+            } else {
+                pa.k[i].min(pb.k[i])
+            }
+        };
+        lin + kmin(&self.e1, 0) + kmin(&self.e2, 1) + self.r
     }
 
     /// μ, a lower bound of F″ on the sub-arc (pa, pb) (see the module docs); `ch` is the

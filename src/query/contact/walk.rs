@@ -1,7 +1,7 @@
 //! The minimum of F(n) = h₁(n) + h₂(−n) over directions, walking the merged breakpoints of both
 //! sides (see the folder's module docs for why it is exact).
 
-use super::arc::Arc;
+use super::arc::{in_arc, Arc};
 use super::feet::{middle_feet, nearest_feet, Feet};
 use super::side::{Axes, Placed, MAX_BREAKPOINTS};
 use super::two_ellipses::TwoEllipses;
@@ -221,10 +221,21 @@ impl<'a> Walk<'a> {
                 return None;
             }
         }
-        // Apart along a breakpoint's direction: the separation −F is concave where positive, so
-        // the maximum is next to the best breakpoint (or to one tied with it).
+        // Two polygons (discs, segments): F − r is the support function of the cores' Minkowski
+        // difference, r = r₁ + r₂ the same on every arc. When the cores overlap along every
+        // breakpoint (F ≥ r there), no arc holds a lower value: its only candidate, r − |q| at
+        // n = −q/|q|, would be a direction separating the cores.
+        let [s0, s1] = self.sides;
+        let polygons = s0.axes.is_none() && s1.axes.is_none() && self.len > 0;
+        let r_core = if polygons { s0.r[0] + s1.r[0] } else { 0.0 };
+        if polygons && best.is_some_and(|b| b.value >= r_core) {
+            return best;
+        }
+        // Apart along a breakpoint's direction (the cores, for two polygons): the separation is
+        // concave where positive, so the maximum is next to the best breakpoint (or to one tied
+        // with it).
         let cut = best.map(|b| b.value + TIE * scale);
-        let separated = best.is_some_and(|b| b.value < 0.0);
+        let separated = best.is_some_and(|b| b.value < r_core);
         for i in 0..self.len.max(1) {
             if separated {
                 let next = wrap(i + 1, self.len);
@@ -294,13 +305,20 @@ impl<'a> Walk<'a> {
                     return true;
                 }
                 if let (Arc::Between(a, b), At::Inside(i)) = (arc, at) {
-                    if self.convex_with_end_minimum(i, a, b, p, &ax) {
+                    let cut = best.map_or(f64::INFINITY, |b| b.value);
+                    if self.arc_screened(i, (a, b), p, &ax, cut) {
                         return true;
                     }
                 }
                 // F − r is the support function of the ellipse centred at q: its stationary
-                // directions are the normals at the feet of −q.
+                // directions are the normals at the feet of −q. From inside the ellipse every
+                // foot has F − r ≥ 0, so none beats a best value below r.
                 let pl = ax.local(-q);
+                let (_, r) = self.linear(p);
+                let inside = (pl.x / ax.a).powi(2) + (pl.y / ax.b).powi(2) < 1.0;
+                if inside && best.is_some_and(|b| b.value < r) {
+                    return true;
+                }
                 let try_feet = |best: &mut Option<Minimum>, feet: &Feet| {
                     let mut any = false;
                     for f in feet.as_slice() {
@@ -313,45 +331,59 @@ impl<'a> Walk<'a> {
                     any
                 };
                 // The nearest foot is the minimum over every direction: when it is in the arc,
-                // it is the arc's; otherwise the arc's is at an end or a middle foot.
+                // it is the arc's; otherwise the arc's is at an end or a middle foot. A middle
+                // foot e (multiplier t ∈ (−a², −b²), p = e + t·(eₓ/a², e_y/b²)) has
+                // F − r = (e − p)·m = −t·|(eₓ/a², e_y/b²)| > b²·(1/a) = ρ_min (a ≥ b): it can
+                // only beat a best value above r + ρ_min.
                 if !try_feet(best, &nearest_feet(ax.a, ax.b, pl)) {
-                    try_feet(best, &middle_feet(ax.a, ax.b, pl));
+                    let rho_min = ax.a.min(ax.b).powi(2) / ax.a.max(ax.b);
+                    if best.is_none_or(|b| b.value > r + rho_min) {
+                        try_feet(best, &middle_feet(ax.a, ax.b, pl));
+                    }
                 }
             }
         }
         true
     }
 
-    /// Whether F is convex on arc i (ends `a`, `b`, pieces `p`, one the ellipse `ax`) with its
-    /// minimum there at an end, so that the arc has no interior minimum.
+    /// Whether arc i (ends `a`, `b`, pieces `p`, one the ellipse `ax`) surely holds no interior
+    /// minimum of F below `best`.
     ///
     /// F is the support function of the Minkowski difference D, so F″ + F = ρ_D, D's radius of
-    /// curvature, which on the arc is at least ρ_E (the ellipse's, ≥ min(a, b)²/max(a, b)) plus
-    /// the vertex's radius r. F is sublinear, so on an arc of width θ < π it is at most
-    /// max(F(a), F(b))/cos(θ/2) (or that maximum, when negative). When that bound is at most
-    /// ρ_E,min + r, F″ ≥ 0 on the arc: F is convex there, and its minimum is inside only if
-    /// F′ < 0 at the start and > 0 at the end (F′(n) = (q + s_E(n))·n⊥, s_E the support point of
-    /// the centred ellipse).
-    fn convex_with_end_minimum(&self, i: usize, a: Vector, b: Vector, p: [usize; 2], ax: &Axes) -> bool {
+    /// curvature, which on the arc is at least ρ_E,arc + r: the ellipse's smallest radius there
+    /// (a²b²/k³ at the largest k on the arc, in closed form) plus the vertex's radius. F is
+    /// sublinear, so on an arc of width θ < π it is at most U = max(F(a), F(b))/cos(θ/2) (or that
+    /// maximum, when negative): F″ ≥ μ = ρ_E,arc + r − U. When μ ≥ 0, F is convex on the arc and
+    /// its minimum is inside only if F′ < 0 at the start and > 0 at the end
+    /// (F′(n) = (q + s_E(n))·n⊥, s_E the support point of the centred ellipse). Otherwise
+    /// F ≥ F(m) + F′(m)x + μx²/2 about the midpoint m, |x| ≤ tan(θ/2), whose minimum is compared
+    /// with `best`.
+    fn arc_screened(&self, i: usize, (a, b): (Vector, Vector), p: [usize; 2], ax: &Axes, best: f64) -> bool {
         let cos = a.dot(b);
         let narrower_than_pi = cos > -1.0;
         if !narrower_than_pi || self.len < 2 {
             return false;
         }
+        let ch = (0.5 * (1.0 + cos)).sqrt();
         let top = self.entries[i].value.max(self.entries[wrap(i + 1, self.len)].value);
-        let bound = if top > 0.0 {
-            top / (0.5 * (1.0 + cos)).sqrt()
-        } else {
-            top
-        };
         let (q, r) = self.linear(p);
-        let (lo, hi) = if ax.a < ax.b { (ax.a, ax.b) } else { (ax.b, ax.a) };
-        let convex = bound <= lo * lo / hi + r;
-        if !convex {
-            return false;
-        }
+        let upper = if top - r > 0.0 { (top - r) / ch + r } else { top };
+        let major = if ax.a >= ax.b { ax.u } else { ax.w };
+        let kmax = if in_arc(a, b, major) || in_arc(a, b, -major) {
+            ax.a.max(ax.b)
+        } else {
+            ax.k(a).max(ax.k(b))
+        };
+        let rho = (ax.a * ax.b) * (ax.a * ax.b) / (kmax * kmax * kmax);
+        let mu = rho + r - upper;
         let slope = |n: Vector| (q + ax.support(n)).dot(perp(n));
-        slope(a) >= 0.0 || slope(b) <= 0.0
+        if mu >= 0.0 {
+            return slope(a) >= 0.0 || slope(b) <= 0.0;
+        }
+        let m = (a + b) / (2.0 * ch);
+        let h = 0.5 * (b - a).length() / ch;
+        let lower = self.value(p, m) - slope(m).abs() * h + 0.5 * mu * h * h;
+        lower > best
     }
 
     /// F at direction n on the pieces `p`, as a candidate minimum.
