@@ -1,7 +1,8 @@
 //! No heap allocation on the hot paths: a counting global allocator (this test binary only)
 //! checks that `time_of_impact` and `stationary_distance` on the crate's curves allocate nothing
-//! for pairs that start separated, and prints what penetrating stationary distances and the
-//! dispatcher (with parry shapes converted on every query) allocate.
+//! for pairs that start separated, that recomputing a contact manifold rapier keeps allocates
+//! nothing, and prints what penetrating stationary distances and the dispatcher (with parry
+//! shapes converted on every query) allocate.
 //!
 //! The counter is per thread, so the test harness's parallel tests do not disturb each other.
 
@@ -274,4 +275,40 @@ fn print_allocations_of_time_of_impact_starting_in_contact() {
             println!("| {label} | {stop} | {:?} | {n} ({b} B) |", r.status);
         }
     }
+}
+
+/// The contact manifolds rapier asks for every step: once a pair's manifold exists (rapier keeps
+/// it), recomputing it allocates nothing, shallow or deep, for every scenario class.
+#[test]
+fn recomputed_contact_manifolds_allocate_nothing() {
+    use parry2d_f64::query::{ContactManifold, PersistentQueryDispatcher};
+    let d = SmoothDispatcher::default();
+    let mut failures = Vec::new();
+    let mut queries = 0usize;
+    for class in ScenarioClass::ALL {
+        for seed in 0..SEEDS {
+            let s = generate(class, seed);
+            let (g1, g2) = (s.shape1.parry_shape(), s.shape2.parry_shape());
+            let size = s.size();
+            let start = pos12_at(&s, s.t0);
+            for k in [0.9, 0.6, 0.3] {
+                let mut pose = start;
+                pose.translation *= k;
+                let mut m: Vec<ContactManifold<(), ()>> = Vec::new();
+                let mut ws = None;
+                let _ = d.contact_manifolds(&pose, &*g1, &*g2, 0.01 * size, &mut m, &mut ws);
+                let (r, n, bytes) = counted(|| d.contact_manifolds(&pose, &*g1, &*g2, 0.01 * size, &mut m, &mut ws));
+                assert!(r.is_ok(), "{}", s.describe());
+                if n > 0 {
+                    failures.push(format!(
+                        "contact_manifolds: {n} allocations ({bytes} B): {}",
+                        s.describe()
+                    ));
+                }
+                queries += 1;
+            }
+        }
+    }
+    println!("{queries} recomputed manifolds, {} allocating", failures.len());
+    assert!(failures.is_empty(), "allocations:\n{}", failures.join("\n"));
 }
