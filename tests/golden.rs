@@ -41,17 +41,20 @@ const FUZZ_CASES: u64 = 40_000;
 /// other witnesses on flat pieces, two points where faces face each other, other feature ids);
 /// every class holds such manifolds. Re-recorded again within issue 18 when the nearest foot's
 /// Newton start moved to the point's own multiplier and the search skipped more arcs (the same
-/// minima to rounding: `grazing`, `thin-ellipse` and `touching-at-t0` kept their digests).
+/// minima to rounding: `grazing`, `thin-ellipse` and `touching-at-t0` kept their digests), and
+/// once more when the search between two ellipses stopped covering a neighbourhood of its local
+/// minimum where F is certified convex (`grazing` and `touching-at-t0` unchanged; so is the
+/// rapier scene's state: that search runs only for contacts the shallow certificate leaves).
 const FUZZ_DIGESTS: [(&str, u64); 9] = [
-    ("coincident", 0xC3B60539C185FE41),
-    ("concentric", 0xB52A2331F8903E93),
-    ("extreme-scale", 0xB15953AD7F659AEB),
+    ("coincident", 0x807F75687385BBDF),
+    ("concentric", 0xFE5FC1CD32583321),
+    ("extreme-scale", 0xB5DE60BB324B82CE),
     ("grazing", 0x78EC7CCCBD83C215),
-    ("parry-pair", 0x4058A44999047E18),
-    ("random", 0x649FAD4559BC707C),
-    ("thin-ellipse", 0x1194EF1A359927E3),
+    ("parry-pair", 0x07AC0FAA64241FF8),
+    ("random", 0x23BAB62770217698),
+    ("thin-ellipse", 0xFD085539362B587B),
     ("touching-at-t0", 0xF1EBFEEED6E41242),
-    ("wild", 0xDEE62C0CC1DBAA47),
+    ("wild", 0x8ADF57F27139FC8F),
 ];
 
 /// Final-state hash of the rapier scene (re-recorded with issue 17: the CCD casts between its

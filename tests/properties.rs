@@ -166,3 +166,82 @@ fn try_constructors_reject_bad_numbers_without_panicking() {
         Ok(())
     });
 }
+
+/// A contact manifold's deepest point is the signed distance (the gap along its normal, which no
+/// sampled axis beats), and every point's distance is measured along the manifold's normal,
+/// for random polygons (sharp or rounded), ellipses, capsule-ellipses, discs and boxes.
+#[test]
+fn manifold_depth_is_the_largest_gap_over_all_axes() {
+    use parry2d_f64::query::{ContactManifold, PersistentQueryDispatcher};
+    use parry2d_f64::shape::{Ball, Cuboid, Shape};
+    use smooth_ccd2d::{CapsuleEllipse, SmoothDispatcher};
+    let strategy = (
+        (0u8..5, 0u8..5),
+        -1.0f64..1.0,
+        (0.01f64..1.0, 3usize..9, 0.0f64..0.3),
+        (0.0f64..1.2, -3.2f64..3.2, -3.2f64..3.2),
+    );
+    run_property(
+        "manifold depth is the largest gap",
+        strategy,
+        |((k1, k2), log_scale, (ratio, sides, r), (dist, dir, angle))| {
+            let s = 10f64.powf(log_scale);
+            // Each shape as parry sees it and as a curve (for the sampled gap).
+            let make = |k: u8| -> (Box<dyn Shape>, Box<dyn ConvexCurve>) {
+                match k {
+                    0 => (
+                        Box::new(Ellipse::new(s, s * ratio)),
+                        Box::new(Ellipse::new(s, s * ratio)),
+                    ),
+                    1 => {
+                        let p = RoundedPolygon::regular(sides, s, s * r);
+                        (Box::new(p.clone()), Box::new(p))
+                    }
+                    2 => {
+                        let c = CapsuleEllipse::new(0.3 * s, 0.4 * s, s * (0.2 + ratio));
+                        (Box::new(c.clone()), Box::new(c))
+                    }
+                    3 => (
+                        Box::new(Ball::new(0.5 * s)),
+                        Box::new(smooth_ccd2d::BallCurve { radius: 0.5 * s }),
+                    ),
+                    _ => {
+                        let h = Vector::new(s, s * (0.1 + ratio));
+                        let core = [
+                            Vector::new(-h.x, -h.y),
+                            Vector::new(h.x, -h.y),
+                            h,
+                            Vector::new(-h.x, h.y),
+                        ];
+                        (Box::new(Cuboid::new(h)), Box::new(RoundedPolygon::new(&core, 0.0)))
+                    }
+                }
+            };
+            // One of this crate's shapes at least (parry's own pairs are parry's).
+            let k1 = if k1 >= 3 && k2 >= 3 { 1 } else { k1 };
+            let ((g1, c1), (g2, c2)) = (make(k1), make(k2));
+            let reach = c1.bounding_radius() + c2.bounding_radius();
+            let pos12 = Pose::new(Vector::new(dir.cos(), dir.sin()) * (dist * reach), angle);
+            let mut m: Vec<ContactManifold<(), ()>> = Vec::new();
+            SmoothDispatcher::default()
+                .contact_manifolds(&pos12, &*g1, &*g2, 2.0 * reach, &mut m, &mut None)
+                .unwrap();
+            let points: Vec<_> = m.iter().flat_map(|m| m.points.iter().map(move |p| (m, p))).collect();
+            prop_assert!(!points.is_empty());
+            let deepest = points.iter().map(|(_, p)| p.dist).fold(f64::INFINITY, f64::min);
+            for k in 0..720 {
+                let th = -std::f64::consts::PI + std::f64::consts::TAU * k as f64 / 720.0;
+                prop_assert!(gap_along(&*c1, &*c2, &pos12, th) <= deepest + 1e-9 * reach);
+            }
+            for (mf, p) in &points {
+                let n = mf.local_n1;
+                prop_assert!((n.length() - 1.0).abs() < 1e-12);
+                prop_assert!(((pos12 * p.local_p2 - p.local_p1).dot(n) - p.dist).abs() <= 1e-9 * reach);
+                // The gap along the normal is the deepest distance (the normal is the optimum).
+                let th = n.y.atan2(n.x);
+                prop_assert!((gap_along(&*c1, &*c2, &pos12, th) - deepest).abs() <= 1e-9 * reach);
+            }
+            Ok(())
+        },
+    );
+}

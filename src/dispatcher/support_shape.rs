@@ -19,6 +19,26 @@ pub(crate) struct SupportScratch {
 }
 
 impl SupportScratch {
+    /// A box with these half-extents (positive, finite) dilated by `radius`: its normals are
+    /// the axes, written without a division.
+    fn cuboid(&mut self, h: Vector, radius: f64) -> Option<SupportShape<'_>> {
+        if !(radius.is_finite() && radius >= 0.0) {
+            return None;
+        }
+        self.vertices = [
+            Vector::new(-h.x, -h.y),
+            Vector::new(h.x, -h.y),
+            Vector::new(h.x, h.y),
+            Vector::new(-h.x, h.y),
+        ];
+        self.normals = [-Vector::Y, Vector::X, Vector::Y, -Vector::X];
+        Some(SupportShape::Polygon {
+            vertices: &self.vertices,
+            normals: &self.normals,
+            radius,
+        })
+    }
+
     /// The polygon with these vertices (counter-clockwise) and radius, normals computed here;
     /// `None` for a degenerate edge, a non-finite vertex or a bad radius.
     fn polygon(&mut self, v: &[Vector], radius: f64) -> Option<SupportShape<'_>> {
@@ -73,21 +93,17 @@ fn stored<'a>(vertices: &'a [Vector], normals: &'a [Vector], radius: f64) -> Opt
 /// half-space, a composite) or invalid parameters.
 pub(crate) fn support_shape<'a>(s: &'a dyn Shape, scratch: &'a mut SupportScratch) -> Option<SupportShape<'a>> {
     let box_ok = |c: &Cuboid| c.half_extents.x > 0.0 && c.half_extents.y > 0.0 && c.half_extents.is_finite();
-    let box_of = |c: &Cuboid| {
-        let h = c.half_extents;
-        [
-            Vector::new(-h.x, -h.y),
-            Vector::new(h.x, -h.y),
-            Vector::new(h.x, h.y),
-            Vector::new(-h.x, h.y),
-        ]
-    };
     match s.shape_type() {
         ShapeType::Custom => {
             if let Some(e) = s.as_shape::<Ellipse>() {
                 Some(SupportShape::Ellipse(e.half_x(), e.half_y()))
             } else if let Some(p) = s.as_shape::<RoundedPolygon>() {
-                stored(p.vertices(), p.edge_normals(), p.corner_radius())
+                // Checked finite when it was built.
+                Some(SupportShape::Polygon {
+                    vertices: p.vertices(),
+                    normals: p.edge_normals(),
+                    radius: p.corner_radius(),
+                })
             } else {
                 let (r1, r2, r3) = s.as_shape::<CapsuleEllipse>()?.params();
                 Some(SupportShape::CapsuleEllipse(r1, r2, r3))
@@ -99,13 +115,13 @@ pub(crate) fn support_shape<'a>(s: &'a dyn Shape, scratch: &'a mut SupportScratc
         }
         ShapeType::Cuboid => {
             let c = s.as_shape::<Cuboid>()?;
-            box_ok(c).then(|| scratch.polygon(&box_of(c), 0.0)).flatten()
+            box_ok(c).then(|| scratch.cuboid(c.half_extents, 0.0)).flatten()
         }
         ShapeType::RoundCuboid => {
             let c = s.as_shape::<RoundCuboid>()?;
             let inner = &c.inner_shape;
             box_ok(inner)
-                .then(|| scratch.polygon(&box_of(inner), c.border_radius))
+                .then(|| scratch.cuboid(inner.half_extents, c.border_radius))
                 .flatten()
         }
         ShapeType::ConvexPolygon => {

@@ -37,6 +37,9 @@ const MAX_STEPS: usize = 100;
 const DESCENT_STEPS: usize = 20;
 /// Halvings at most of a descent step that does not lower F.
 const HALVINGS: usize = 8;
+/// Half-widths (radians) of the neighbourhoods of a local minimum tried for convexity, widest
+/// first.
+const NEIGHBOURHOODS: [f64; 4] = [0.2, 0.05, 0.012, 0.003];
 /// Widest sub-arc the search starts from (radians).
 const START_WIDTH: f64 = core::f64::consts::FRAC_PI_4;
 
@@ -145,37 +148,10 @@ impl TwoEllipses {
         best: f64,
         hint: Option<Vector>,
     ) -> Option<Option<(f64, Vector)>> {
-        let width = {
-            let w = cross(a, b).atan2(a.dot(b));
-            if w <= 0.0 {
-                w + core::f64::consts::TAU
-            } else {
-                w
-            }
-        };
-        let pieces = (width / START_WIDTH).ceil().max(1.0) as usize;
-        let (s, c) = sin_cos(width / pieces as f64);
-        let first = self.at(a);
-        let mut stack = [(first, first); 64];
-        let mut top = 0;
+        let mut stack = [(self.at(a), self.at(a)); 64];
         let mut found: Option<(f64, Vector)> = None;
         let mut bound = best;
-        let mut prev = first;
-        let mut start = first;
-        for i in 0..pieces {
-            let n = if i + 1 == pieces {
-                b
-            } else {
-                Vector::new(c * prev.n.x - s * prev.n.y, s * prev.n.x + c * prev.n.y)
-            };
-            let next = self.at(n);
-            if next.f < start.f {
-                start = next;
-            }
-            stack[top] = (prev, next);
-            top += 1;
-            prev = next;
-        }
+        let (mut top, mut start) = self.cover(a, b, &mut stack);
         if let Some(h) = hint.filter(|&h| a == b || in_arc(a, b, h)) {
             let ph = self.at(h);
             if ph.f < start.f {
@@ -196,6 +172,13 @@ impl TwoEllipses {
             }
             if local {
                 note(&low, &mut bound, &mut found);
+                if a == b {
+                    // F convex on a neighbourhood of the local minimum: its minimum there is
+                    // this one, and the search covers the rest of the circle only.
+                    if let Some((pa, pb)) = self.convex_neighbourhood(&low) {
+                        (top, _) = self.cover(pb.n, pa.n, &mut stack);
+                    }
+                }
             } else {
                 bound = bound.min(low.f);
             }
@@ -262,6 +245,52 @@ impl TwoEllipses {
             }
         };
         lin + kmin(&self.e1, 0) + kmin(&self.e2, 1) + self.r
+    }
+
+    /// Covers the arc from `a` counter-clockwise to `b` (the whole circle when `a == b`) with
+    /// sub-arcs of at most [`START_WIDTH`] on `stack`: their number, and the lowest end.
+    fn cover(&self, a: Vector, b: Vector, stack: &mut [(Point, Point); 64]) -> (usize, Point) {
+        let width = {
+            let w = cross(a, b).atan2(a.dot(b));
+            if w <= 0.0 {
+                w + core::f64::consts::TAU
+            } else {
+                w
+            }
+        };
+        let pieces = (width / START_WIDTH).ceil().max(1.0) as usize;
+        let (s, c) = sin_cos(width / pieces as f64);
+        let first = self.at(a);
+        let (mut prev, mut start) = (first, first);
+        for (i, slot) in stack.iter_mut().enumerate().take(pieces) {
+            let n = if i + 1 == pieces {
+                b
+            } else {
+                Vector::new(c * prev.n.x - s * prev.n.y, s * prev.n.x + c * prev.n.y)
+            };
+            let next = self.at(n);
+            if next.f < start.f {
+                start = next;
+            }
+            *slot = (prev, next);
+            prev = next;
+        }
+        (pieces, start)
+    }
+
+    /// The ends of an arc about the local minimum `low` on which F is certified convex (μ > 0,
+    /// see [`TwoEllipses::curvature_bound`]), so that `low` is its minimum; the widest of a few
+    /// tried.
+    fn convex_neighbourhood(&self, low: &Point) -> Option<(Point, Point)> {
+        let t = perp(low.n);
+        for half in NEIGHBOURHOODS {
+            let (s, c) = sin_cos(half);
+            let (pa, pb) = (self.at(low.n * c - t * s), self.at(low.n * c + t * s));
+            if self.curvature_bound(pa, pb, c) > 0.0 {
+                return Some((pa, pb));
+            }
+        }
+        None
     }
 
     /// μ, a lower bound of F″ on the sub-arc (pa, pb) (see the module docs); `ch` is the
