@@ -52,12 +52,12 @@
 use super::input_guard;
 use super::parry_fallback::{pair_size, parry_within, pushed_together, TOUCH_PUSH};
 use super::route::{own_curve, route, RouteScratch};
-use super::support_shape::{support_shape, SupportScratch};
+use super::support_shape::exact_contact;
 use crate::curve::pieces::{flat_pieces, piece_index, piece_is_flat};
 use crate::curve::ConvexCurve;
 use crate::numerics::math::{Pose, Real, Vector};
 use crate::parry_shape::FLAT_FEATURE_MAX_ANGLE;
-use crate::query::contact::{contact, Contact, Feature};
+use crate::query::contact::{Contact, Feature};
 use crate::query::stationary::StationaryDistance;
 use crate::SmoothDispatcher;
 use parry2d_f64::query::details::{
@@ -318,14 +318,11 @@ where
             return Ok(());
         }
         let unconstrained = normal_constraints1.is_none() && normal_constraints2.is_none();
-        if ours && unconstrained && input_guard::pose_ok(pos12) {
-            let (mut st1, mut st2) = (SupportScratch::default(), SupportScratch::default());
-            if let (Some(s1), Some(s2)) = (support_shape(g1, &mut st1), support_shape(g2, &mut st2)) {
-                let hint = Some(manifold.local_n1).filter(|n| self.warm_start && n.is_finite() && *n != Vector::ZERO);
-                if let Some(c) = contact(s1, s2, pos12, FLAT_FEATURE_MAX_ANGLE.cos(), hint) {
-                    if manifold_from_contact(pos12, &c, prediction, manifold) {
-                        return Ok(());
-                    }
+        if ours && unconstrained {
+            let hint = Some(manifold.local_n1).filter(|n| self.warm_start && n.is_finite() && *n != Vector::ZERO);
+            if let Some(c) = exact_contact(pos12, g1, g2, hint) {
+                if manifold_from_contact(pos12, &c, prediction, manifold) {
+                    return Ok(());
                 }
             }
         }

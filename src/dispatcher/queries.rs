@@ -7,7 +7,8 @@ use super::composite::{
 };
 use super::input_guard;
 use super::parry_fallback::parry_contact;
-use super::route::{curves_toi, route, CurveOf, Route, RouteScratch};
+use super::route::{curves_toi, own_curve, route, CurveOf, Route, RouteScratch};
+use super::support_shape::exact_contact;
 use super::SmoothDispatcher;
 use crate::numerics::math::{Pose, Real, Vector};
 use crate::query::gap::gap_distance;
@@ -92,6 +93,23 @@ impl QueryDispatcher for SmoothDispatcher {
         if prediction.is_nan() || prediction < 0.0 {
             // parry's contract (its composite helpers assert it): no negative or NaN margin.
             return Err(Unsupported);
+        }
+        // The exact contact query where it applies (this crate's shapes with polygons, discs,
+        // ellipses and capsule-ellipses): the deepest point of its manifold.
+        if own_curve(g1).is_some() || own_curve(g2).is_some() {
+            if Self::far_apart(pos12, g1, g2, prediction) {
+                return Ok(None);
+            }
+            if let Some(c) = exact_contact(pos12, g1, g2, None) {
+                let p = c.points[0];
+                let (p2, n2) = (
+                    pos12.inverse_transform_point(p.point2),
+                    pos12.inverse_transform_vector(-c.normal),
+                );
+                if p2.is_finite() && n2.is_finite() {
+                    return Ok((p.dist <= prediction).then(|| Contact::new(p.point1, p2, c.normal, n2, p.dist)));
+                }
+            }
         }
         match route(g1, g2, &mut RouteScratch::default()) {
             // The gap tracker's exact distance for pairs with no strictly convex side.

@@ -3,8 +3,10 @@
 //! capsules (round or not) — read in place, or with their few vertices and normals written to a
 //! caller's [`SupportScratch`] on the stack. No curve is built.
 
-use crate::numerics::math::{cross, perp, Vector};
-use crate::query::contact::SupportShape;
+use super::input_guard;
+use crate::numerics::math::{cross, perp, Pose, Vector};
+use crate::parry_shape::FLAT_FEATURE_MAX_ANGLE;
+use crate::query::contact::{contact, Contact, SupportShape};
 use crate::{CapsuleEllipse, Ellipse, RoundedPolygon};
 use parry2d_f64::shape::{
     Ball, Capsule, ConvexPolygon, Cuboid, RoundConvexPolygon, RoundCuboid, RoundTriangle, Segment, Shape, ShapeType,
@@ -147,4 +149,17 @@ pub(crate) fn support_shape<'a>(s: &'a dyn Shape, scratch: &'a mut SupportScratc
         }
         _ => None,
     }
+}
+
+/// The exact contact query ([`crate::query::contact`]) of a pair the dispatcher answers with it:
+/// both shapes readable by [`support_shape`] and a proper pose; `None` otherwise (the caller
+/// answers the pair another way). `hint`: a direction near the normal (rapier's previous one).
+pub(crate) fn exact_contact(pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape, hint: Option<Vector>) -> Option<Contact> {
+    if !input_guard::pose_ok(pos12) {
+        return None;
+    }
+    let (mut st1, mut st2) = (SupportScratch::default(), SupportScratch::default());
+    let s1 = support_shape(g1, &mut st1)?;
+    let s2 = support_shape(g2, &mut st2)?;
+    contact(s1, s2, pos12, FLAT_FEATURE_MAX_ANGLE.cos(), hint)
 }
