@@ -112,7 +112,7 @@ impl Frame {
                 };
                 let len = n.length();
                 let normal = if len > 0.0 && len.is_finite() {
-                    n / len
+                    n * (1.0 / len)
                 } else {
                     Vector::X
                 };
@@ -156,8 +156,10 @@ pub(crate) fn nearest_feet(a: f64, b: f64, p: Vector) -> Feet {
         // r₀ − 1 without cancellation (near-circles).
         let rm1 = ((a - b) / b) * ((a + b) / b);
         let g = |v: f64| {
-            let (p0, p1) = (r0 * z0 / (v + rm1), z1 / v);
-            (p0 * p0 + p1 * p1 - 1.0, -2.0 * (p0 * p0 / (v + rm1) + p1 * p1 / v))
+            let (i0, i1) = (1.0 / (v + rm1), 1.0 / v);
+            let (p0, p1) = (r0 * z0 * i0, z1 * i1);
+            let (q0, q1) = (p0 * p0, p1 * p1);
+            (q0 + q1 - 1.0, -2.0 * (q0 * i0 + q1 * i1))
         };
         // G ≥ 0 at v_lo (one of the two terms is ≥ 1 there). The start is v = 1 (t = 0, the
         // point on the ellipse) when G(1) ≥ 0 (the point outside), else one Newton step from
@@ -216,16 +218,16 @@ pub(crate) fn middle_feet(a: f64, b: f64, p: Vector) -> Feet {
             }
             // Left root in u ∈ (0, u*], from u = ca (< u*: Φ(u*) ≤ 0 forces ca < u*).
             let ul = newton_increasing(ca.min(u_star), u_star, |u| {
-                let w = d - u;
-                let (pu, pw) = (ca / u, cb / w);
-                (pu * pu + pw * pw - 1.0, -2.0 * pu * pu / u + 2.0 * pw * pw / w)
+                let (iu, iw) = (1.0 / u, 1.0 / (d - u));
+                let (qu, qw) = ((ca * iu).powi(2), (cb * iw).powi(2));
+                (qu + qw - 1.0, -2.0 * qu * iu + 2.0 * qw * iw)
             });
             f.push(&mut out, a * a * x0 / ul, -b * b * y0 / (d - ul), false, false);
             // Right root in w ∈ (0, w*], from w = cb.
             let wr = newton_increasing(cb.min(w_star), w_star, |w| {
-                let u = d - w;
-                let (pu, pw) = (ca / u, cb / w);
-                (pu * pu + pw * pw - 1.0, 2.0 * pu * pu / u - 2.0 * pw * pw / w)
+                let (iu, iw) = (1.0 / (d - w), 1.0 / w);
+                let (qu, qw) = ((ca * iu).powi(2), (cb * iw).powi(2));
+                (qu + qw - 1.0, 2.0 * qu * iu - 2.0 * qw * iw)
             });
             f.push(&mut out, a * a * x0 / (d - wr), -b * b * y0 / wr, false, false);
         }

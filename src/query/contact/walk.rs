@@ -337,7 +337,7 @@ impl<'a> Walk<'a> {
                 // only beat a best value above r + ρ_min.
                 if !try_feet(best, &nearest_feet(ax.a, ax.b, pl)) {
                     let rho_min = ax.a.min(ax.b).powi(2) / ax.a.max(ax.b);
-                    if best.is_none_or(|b| b.value > r + rho_min) {
+                    if best.is_none_or(|b| b.value > r + rho_min) && middle_quadrant_meets(arc, &ax, pl) {
                         try_feet(best, &middle_feet(ax.a, ax.b, pl));
                     }
                 }
@@ -396,6 +396,23 @@ impl<'a> Walk<'a> {
             active: p,
         }
     }
+}
+
+/// Whether `arc` meets the quadrant of directions where the middle feet of `pl` (a point in the
+/// ellipse's axes) have their normals: same sign as `pl` along the major axis, opposite sign
+/// along the minor axis (the multiplier t lies between −a² and −b²: the major coordinate keeps
+/// its sign, the minor one flips). A point on an axis (a sign undefined) meets every arc.
+fn middle_quadrant_meets(arc: Arc, ax: &Axes, pl: Vector) -> bool {
+    let Arc::Between(a, b) = arc else { return true };
+    let (major, minor) = if ax.a >= ax.b { (pl.x, pl.y) } else { (pl.y, pl.x) };
+    if major == 0.0 || minor == 0.0 {
+        return true;
+    }
+    let (u_major, u_minor) = if ax.a >= ax.b { (ax.u, ax.w) } else { (ax.w, ax.u) };
+    let edge1 = u_major * major.signum();
+    let edge2 = u_minor * -minor.signum();
+    let inside = |d: Vector| d.dot(edge1) > 0.0 && d.dot(edge2) > 0.0;
+    inside(a) || inside(b) || arc.contains(edge1) || arc.contains(edge2)
 }
 
 /// `k` reduced into 0..n for k < 2n (an index one lap past the end), without a division.
