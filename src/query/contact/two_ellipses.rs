@@ -19,6 +19,12 @@
 //!   inside, where the one root of the increasing F′ is found by Newton's method kept inside a
 //!   shrinking bracket (bisection when a step leaves it).
 //!
+//! Over the whole circle the search starts with a descent to a local minimum (Newton's method
+//! from the previous normal when rapier hands one back, else from the lowest of eight directions):
+//! it is the answer at once when certified (apart, or shallower than the two smallest radii of
+//! curvature: [`TwoEllipses::minimum`]); otherwise the widest of a few neighbourhoods of it on
+//! which μ > 0 (F convex, so the minimum there is this one) is left out of the search.
+//!
 //! A sub-arc is discarded when its bound exceeds the best value of F seen (at any end, midpoint
 //! or root), solved when convex, split in two otherwise. Discarding compares with the best value
 //! without tolerance, so the answer is the global minimum up to rounding; at a strict local
@@ -148,39 +154,62 @@ impl TwoEllipses {
         best: f64,
         hint: Option<Vector>,
     ) -> Option<Option<(f64, Vector)>> {
-        let mut stack = [(self.at(a), self.at(a)); 64];
+        let blank = Point {
+            n: a,
+            f: 0.0,
+            df: 0.0,
+            k: [0.0; 2],
+        };
+        let mut stack = [(blank, blank); 64];
         let mut found: Option<(f64, Vector)> = None;
         let mut bound = best;
-        let (mut top, mut start) = self.cover(a, b, &mut stack);
-        if let Some(h) = hint.filter(|&h| a == b || in_arc(a, b, h)) {
-            let ph = self.at(h);
-            if ph.f < start.f {
-                start = ph;
+        let full = a == b;
+        // Warm start over the whole circle: the descent from the previous normal, and the search
+        // over the rest of the circle only, when its minimum is certified or has a convex
+        // neighbourhood (no first sampling of the circle).
+        let warm = hint.filter(|_| full).map(|h| self.descend(self.at(h)));
+        let mut top = 0;
+        let mut covered = false;
+        if let Some((low, true)) = warm {
+            if self.certified(&low) {
+                return Some((low.f < best).then_some((low.f, low.n)));
+            }
+            if let Some((pa, pb)) = self.convex_neighbourhood(&low) {
+                note(&low, &mut bound, &mut found);
+                (top, _) = self.cover(pb.n, pa.n, &mut stack);
+                covered = true;
             }
         }
-        note(&start, &mut bound, &mut found);
-        let (low, local) = self.descend(start);
-        if a == b || in_arc(a, b, low.n) {
-            if local && a == b {
-                let rho = |e: &Axes| {
-                    let (lo, hi) = if e.a < e.b { (e.a, e.b) } else { (e.b, e.a) };
-                    lo * lo / hi
-                };
-                if low.f - self.r < 0.0 || low.f - self.r < rho(&self.e1) + rho(&self.e2) {
-                    return Some((low.f < best).then_some((low.f, low.n)));
+        if !covered {
+            let (t, mut start) = self.cover(a, b, &mut stack);
+            top = t;
+            if let Some((low, _)) = warm {
+                bound = bound.min(low.f);
+            }
+            if let Some(h) = hint.filter(|&h| full || in_arc(a, b, h)) {
+                let ph = self.at(h);
+                if ph.f < start.f {
+                    start = ph;
                 }
             }
-            if local {
-                note(&low, &mut bound, &mut found);
-                if a == b {
-                    // F convex on a neighbourhood of the local minimum: its minimum there is
-                    // this one, and the search covers the rest of the circle only.
-                    if let Some((pa, pb)) = self.convex_neighbourhood(&low) {
-                        (top, _) = self.cover(pb.n, pa.n, &mut stack);
-                    }
+            note(&start, &mut bound, &mut found);
+            let (low, local) = self.descend(start);
+            if full || in_arc(a, b, low.n) {
+                if local && full && self.certified(&low) {
+                    return Some((low.f < best).then_some((low.f, low.n)));
                 }
-            } else {
-                bound = bound.min(low.f);
+                if local {
+                    note(&low, &mut bound, &mut found);
+                    if full {
+                        // F convex on a neighbourhood of the local minimum: its minimum there is
+                        // this one, and the search covers the rest of the circle only.
+                        if let Some((pa, pb)) = self.convex_neighbourhood(&low) {
+                            (top, _) = self.cover(pb.n, pa.n, &mut stack);
+                        }
+                    }
+                } else {
+                    bound = bound.min(low.f);
+                }
             }
         }
         let mut budget = MAX_ARCS;
@@ -245,6 +274,17 @@ impl TwoEllipses {
             }
         };
         lin + kmin(&self.e1, 0) + kmin(&self.e2, 1) + self.r
+    }
+
+    /// Whether a local minimum over the whole circle is the global one without a search: apart
+    /// (F − r < 0) or shallow (F − r below the sum of the ellipses' smallest radii of curvature;
+    /// see [`TwoEllipses::minimum`]).
+    fn certified(&self, low: &Point) -> bool {
+        let rho = |e: &Axes| {
+            let (lo, hi) = if e.a < e.b { (e.a, e.b) } else { (e.b, e.a) };
+            lo * lo / hi
+        };
+        low.f - self.r < 0.0 || low.f - self.r < rho(&self.e1) + rho(&self.e2)
     }
 
     /// Covers the arc from `a` counter-clockwise to `b` (the whole circle when `a == b`) with
