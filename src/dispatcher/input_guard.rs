@@ -18,7 +18,7 @@ use parry2d_f64::query::{
     ClosestPoints, Contact, ContactManifold, NonlinearRigidMotion, ShapeCastHit, ShapeDistance, ShapeIntersection,
     Unsupported,
 };
-use parry2d_f64::shape::Shape;
+use parry2d_f64::shape::{Shape, ShapeType};
 
 /// The largest coordinate (of a pose's translation, of a shape's bounding box) handed to parry:
 /// its GJK squares and sums coordinates, and asserts that the results are finite.
@@ -38,9 +38,16 @@ pub(crate) fn pose_ok(p: &Pose) -> bool {
 /// a negative size has `mins > maxs`, and a negative `ccd_thickness` that makes parry's
 /// nonlinear cast walk backwards for ever).
 pub(crate) fn shapes_ok(g1: &dyn Shape, g2: &dyn Shape) -> bool {
-    let ok = |g: &dyn Shape| {
-        if let Some(hs) = g.as_shape::<parry2d_f64::shape::HalfSpace>() {
-            return hs.normal.is_finite();
+    shapes_ok_typed(g1, g1.shape_type(), g2, g2.shape_type())
+}
+
+/// [`shapes_ok`] for shapes whose types (`t1`, `t2`) the caller already has.
+pub(crate) fn shapes_ok_typed(g1: &dyn Shape, t1: ShapeType, g2: &dyn Shape, t2: ShapeType) -> bool {
+    let ok = |g: &dyn Shape, t: ShapeType| {
+        if t == ShapeType::HalfSpace {
+            return g
+                .as_shape::<parry2d_f64::shape::HalfSpace>()
+                .is_some_and(|hs| hs.normal.is_finite());
         }
         let a = g.compute_local_aabb();
         let m = a.mins.abs().max(a.maxs.abs());
@@ -50,7 +57,7 @@ pub(crate) fn shapes_ok(g1: &dyn Shape, g2: &dyn Shape) -> bool {
             && a.mins.x <= a.maxs.x
             && a.mins.y <= a.maxs.y
     };
-    ok(g1) && ok(g2)
+    ok(g1, t1) && ok(g2, t2)
 }
 
 pub(crate) use crate::error::AllFinite;

@@ -261,12 +261,15 @@ fn manifold_from_contact<M, C: Default + Copy>(
 }
 
 /// Whether one side is a shape parry decomposes (composite, trimesh, heightfield, voxels).
-fn is_composite_like(g: &dyn Shape) -> bool {
-    g.as_composite_shape().is_some()
-        || matches!(
-            g.shape_type(),
-            ShapeType::TriMesh | ShapeType::HeightField | ShapeType::Voxels
-        )
+fn is_composite_like(g: &dyn Shape, t: ShapeType) -> bool {
+    match t {
+        ShapeType::Compound | ShapeType::Polyline | ShapeType::TriMesh | ShapeType::HeightField | ShapeType::Voxels => {
+            true
+        }
+        // A user's shape may be a composite; parry's other shapes are not.
+        ShapeType::Custom => g.as_composite_shape().is_some(),
+        _ => false,
+    }
 }
 
 impl<M, C> PersistentQueryDispatcher<M, C> for SmoothDispatcher
@@ -287,8 +290,22 @@ where
             // parry's contract (its composite helpers assert it): no negative or NaN prediction.
             return Err(Unsupported);
         }
-        if is_composite_like(g1) || is_composite_like(g2) {
+        let (t1, t2) = (g1.shape_type(), g2.shape_type());
+        if is_composite_like(g1, t1) || is_composite_like(g2, t2) {
             composite_manifolds(self, pos12, g1, g2, prediction, manifolds, workspace);
+            return Ok(());
+        }
+        if t1 != ShapeType::Custom && t2 != ShapeType::Custom {
+            // Two of parry's convex shapes: parry's manifold, behind the dispatcher's guards.
+            if !(input_guard::pose_ok(pos12) && input_guard::shapes_ok_typed(g1, t1, g2, t2)) {
+                manifolds.iter_mut().for_each(|m| m.clear());
+                return Err(Unsupported);
+            }
+            DefaultQueryDispatcher.contact_manifolds(pos12, g1, g2, prediction, manifolds, workspace)?;
+            if !manifolds.iter().all(input_guard::AllFinite::all_finite) {
+                manifolds.iter_mut().for_each(|m| m.clear());
+                return Err(Unsupported);
+            }
             return Ok(());
         }
         if manifolds.is_empty() {
