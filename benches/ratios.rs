@@ -29,31 +29,15 @@ use smooth_ccd2d::{time_of_impact, BallCurve, ConvexCurve, Ellipse, SmoothDispat
 use std::hint::black_box;
 use std::time::Duration;
 use support::scenarios::{par_map, ScenarioClass, ScenarioKind};
-use support::{split_batch, sweep_of, Case, PolygonDisc};
+use support::{sci, split_batch, sweep_of, us, Case, PolygonDisc};
 
 use support::timing::{calibrate, quantile, time_contenders, time_once, ROUNDS};
-
-fn us(x: f64) -> String {
-    if x.is_nan() {
-        "–".into()
-    } else {
-        format!("{:.2}", x * 1e6)
-    }
-}
 
 fn fx2(x: f64) -> String {
     if x.is_nan() {
         "–".into()
     } else {
         format!("{x:.2}")
-    }
-}
-
-fn sci(x: f64) -> String {
-    if x.is_nan() {
-        "–".into()
-    } else {
-        format!("{x:.1e}")
     }
 }
 

@@ -12,11 +12,12 @@
 #[path = "common/mod.rs"]
 mod common;
 
+use common::resting::manifold_penetration as worst_penetration;
 use common::scenes::{
     insert_pile, pile_bodies, pile_walls as walls, PileShape, PILE_BODIES as BODIES, PILE_HALF_WIDTH as HALF_WIDTH,
 };
 use common::world::{World, GRAVITY};
-use common::{out_dir, worst_penetration, Panel, Svg};
+use common::{out_dir, Panel, Svg};
 use parry2d_f64::query::QueryDispatcher;
 use rapier2d_f64::prelude::*;
 use smooth_ccd2d::{ConvexCurve, SmoothDispatcher};

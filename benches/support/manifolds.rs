@@ -10,10 +10,10 @@ use super::reference::reference_distance;
 use super::rng::Rng;
 use super::scenarios::{ScenarioClass, TestShape};
 use super::timing::{quantile, time_pair};
-use super::{parry_polygonal, Case, BATCH};
+use super::{parry_polygonal, pose_at_depth, sci, us, Case, BATCH};
 use core::f64::consts::{PI, TAU};
 use parry2d_f64::math::{Pose, Vector};
-use parry2d_f64::query::{ContactManifold, DefaultQueryDispatcher, PersistentQueryDispatcher, QueryDispatcher};
+use parry2d_f64::query::{ContactManifold, DefaultQueryDispatcher, PersistentQueryDispatcher};
 use parry2d_f64::shape::Shape;
 use smooth_ccd2d::{BallCurve, ConvexCurve, Ellipse, RoundedPolygon, SmoothDispatcher};
 use std::hint::black_box;
@@ -147,26 +147,7 @@ pub fn pairs_at(kind: &Kind, depth: f64, d: &SmoothDispatcher) -> Vec<ManifoldPa
         .filter_map(|(t1, t2, p0)| {
             let (g1, g2) = (t1.parry_shape(), t2.parry_shape());
             let size = radius(t1).max(radius(t2));
-            let at = |k: f64| Pose::new(p0.translation * k, p0.rotation.angle());
-            let dist = |k: f64| match d.contact(&at(k), &*g1, &*g2, 0.0) {
-                Ok(Some(c)) => Some(c.dist),
-                Ok(None) => Some(f64::INFINITY),
-                Err(_) => None,
-            };
-            let target = depth * size;
-            let (mut lo, mut hi) = (0.0, 1.0);
-            if !(dist(hi)? > target && dist(lo)? < target) {
-                return None;
-            }
-            for _ in 0..60 {
-                let mid = 0.5 * (lo + hi);
-                if dist(mid)? > target {
-                    hi = mid;
-                } else {
-                    lo = mid;
-                }
-            }
-            let pos12 = at(hi);
+            let pos12 = pose_at_depth(p0, &*g1, &*g2, depth * size, d)?;
             let reference = reference_distance(t1.curve(), &Pose::IDENTITY, t2.curve(), &pos12).distance;
             Some(ManifoldPair {
                 a1: parry_polygonal(t1),
@@ -231,22 +212,6 @@ pub fn time_pairs(set: &[ManifoldPair], d: &SmoothDispatcher) -> Row {
         row.parry.push(b);
     }
     row
-}
-
-fn us(x: f64) -> String {
-    if x.is_nan() {
-        "–".into()
-    } else {
-        format!("{:.2}", x * 1e6)
-    }
-}
-
-fn sci(x: f64) -> String {
-    if x.is_nan() {
-        "–".into()
-    } else {
-        format!("{x:.1e}")
-    }
 }
 
 /// Prints the contact-manifold table (`cargo bench --bench ratios -- manifolds`).

@@ -4,11 +4,14 @@
 //! polygon – disc scenarios of the sweep benchmarks, timing, parry's polygonal stand-ins, the
 //! comparison on parry's own shapes ([`native`]) and the pile ([`pile`]). The files of
 //! `tests/common` it needs are included as they are (`#[path]`):
-//! the reference, the RNG, the scenario generator, the rapier world and its scenes.
+//! the reference, the RNG, the scenario generator, the rapier world and its scenes, the resting
+//! scenes (whose polygonal stand-ins the benches share).
 #![allow(dead_code)]
 
 #[path = "../../tests/common/reference.rs"]
 pub mod reference;
+#[path = "../../tests/common/resting.rs"]
+pub mod resting;
 #[path = "../../tests/common/rng.rs"]
 pub mod rng;
 #[path = "../../tests/common/scenarios.rs"]
@@ -87,34 +90,53 @@ impl Case {
     /// The pose at the window start with the centres brought closer until this crate's signed
     /// distance is `depth` (negative: penetrating), by bisection on the translation's scale.
     pub fn pose_at_depth(&self, depth: f64, d: &SmoothDispatcher) -> Option<Pose> {
-        let p0 = self.start_pose();
-        let at = |k: f64| {
-            let mut p = p0;
-            p.translation *= k;
-            p
-        };
-        // The dispatcher's contact with prediction 0: the signed distance when overlapping,
-        // `None` (taken as +∞) when apart.
-        let dist = |k: f64| -> Option<f64> {
-            match d.contact(&at(k), &*self.g1, &*self.g2, 0.0) {
-                Ok(Some(c)) => Some(c.dist),
-                Ok(None) => Some(f64::INFINITY),
-                Err(_) => None,
-            }
-        };
-        let (mut lo, mut hi) = (0.0, 1.0);
-        if !(dist(hi)? > depth && dist(lo)? < depth) {
-            return None;
+        pose_at_depth(&self.start_pose(), &*self.g1, &*self.g2, depth, d)
+    }
+}
+
+/// `start` (shape 2 in shape 1's frame) with the translation scaled down until the dispatcher's
+/// signed distance is `depth` (negative: penetrating), by bisection on the scale (its `contact`
+/// with prediction 0: the signed distance when overlapping, apart taken as +∞); `None` when the
+/// scale 1 is not apart by more or the scale 0 not deeper.
+pub fn pose_at_depth(start: &Pose, g1: &dyn Shape, g2: &dyn Shape, depth: f64, d: &SmoothDispatcher) -> Option<Pose> {
+    let at = |k: f64| Pose::new(start.translation * k, start.rotation.angle());
+    let dist = |k: f64| -> Option<f64> {
+        match d.contact(&at(k), g1, g2, 0.0) {
+            Ok(Some(c)) => Some(c.dist),
+            Ok(None) => Some(f64::INFINITY),
+            Err(_) => None,
         }
-        for _ in 0..60 {
-            let mid = 0.5 * (lo + hi);
-            if dist(mid)? > depth {
-                hi = mid;
-            } else {
-                lo = mid;
-            }
+    };
+    let (mut lo, mut hi) = (0.0, 1.0);
+    if !(dist(hi)? > depth && dist(lo)? < depth) {
+        return None;
+    }
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if dist(mid)? > depth {
+            hi = mid;
+        } else {
+            lo = mid;
         }
-        Some(at(hi))
+    }
+    Some(at(hi))
+}
+
+/// Microseconds with two decimals ("–" for NaN).
+pub fn us(x: f64) -> String {
+    if x.is_nan() {
+        "–".into()
+    } else {
+        format!("{:.2}", x * 1e6)
+    }
+}
+
+/// One significant decimal in scientific notation ("–" for NaN).
+pub fn sci(x: f64) -> String {
+    if x.is_nan() {
+        "–".into()
+    } else {
+        format!("{x:.1e}")
     }
 }
 
@@ -277,20 +299,7 @@ pub mod timing {
     }
 }
 
-/// The polygon whose vertices are the support points of `n` evenly spread directions: inscribed
-/// in the curve, parry's polygonal stand-in for a smooth shape.
-pub fn polygon_approximation(c: &dyn smooth_ccd2d::ConvexCurve, n: usize) -> parry2d_f64::shape::ConvexPolygon {
-    let pts: Vec<parry2d_f64::math::Vector> = (0..n)
-        .map(|k| {
-            let a = core::f64::consts::TAU * k as f64 / n as f64;
-            c.support_point(parry2d_f64::math::Vector::new(a.cos(), a.sin()))
-        })
-        .collect();
-    parry2d_f64::shape::ConvexPolygon::from_convex_hull(&pts).expect("a non-degenerate polygon")
-}
-
-/// Vertices of the polygon approximations of smooth shapes.
-pub const POLYGON_VERTICES: usize = 64;
+pub use resting::{polygon_approximation, POLYGON_VERTICES};
 
 /// A test shape as a shape parry's own dispatcher builds manifolds for: a smooth shape becomes its
 /// `POLYGON_VERTICES`-gon approximation, a rounded polygon parry's `RoundConvexPolygon` (exact), a

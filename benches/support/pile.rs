@@ -4,22 +4,13 @@
 //! (`POLYGON_VERTICES`-gons for the smooth shapes, parry's `RoundConvexPolygon` for the rounded
 //! polygons) and parry's default dispatcher.
 
+use super::resting::pile_polygonal;
 use super::scenes::{insert_pile, pile_bodies, PileShape};
 use super::world::{World, GRAVITY};
-use super::{polygon_approximation, POLYGON_VERTICES};
 use rapier2d_f64::prelude::*;
 use smooth_ccd2d::SmoothDispatcher;
 
 pub use super::scenes::PILE_BODIES as BODIES;
-
-/// A pile body's shape as parry's polygon approximation.
-fn polygonal(shape: &PileShape) -> SharedShape {
-    match shape {
-        PileShape::Ellipse(e) => SharedShape::new(polygon_approximation(e, POLYGON_VERTICES)),
-        PileShape::Polygon(p) => SharedShape::new(p.to_parry().expect("a regular polygon")),
-        PileShape::Capsule(c) => SharedShape::new(polygon_approximation(c, POLYGON_VERTICES)),
-    }
-}
 
 /// A rapier world stepping the pile.
 pub struct Pile {
@@ -46,7 +37,7 @@ impl Pile {
         if exact {
             insert_pile(&mut world, &bodies, PileShape::shared);
         } else {
-            insert_pile(&mut world, &bodies, polygonal);
+            insert_pile(&mut world, &bodies, pile_polygonal);
         }
         Pile { world }
     }

@@ -24,21 +24,6 @@ pub mod world;
 use rapier2d_f64::prelude::*;
 use std::fmt::Write as _;
 use std::path::PathBuf;
-use world::World;
-
-/// The most negative contact distance over all contact manifolds of the world's narrow phase (0
-/// when there is no penetrating contact point).
-pub fn worst_penetration(world: &World) -> f64 {
-    let mut worst: f64 = 0.0;
-    for pair in world.narrow_phase.contact_pairs() {
-        for m in pair.manifolds() {
-            for p in &m.points {
-                worst = worst.min(p.dist);
-            }
-        }
-    }
-    worst
-}
 
 /// The output folder: the first command-line argument, or `target/examples-out` under the crate's
 /// root (wherever the example is run from); created.

@@ -7,3 +7,5 @@ pub(crate) mod math;
 pub(crate) mod motion;
 pub(crate) mod quadrature;
 pub(crate) mod roots;
+#[cfg(test)]
+pub(crate) mod test_rng;

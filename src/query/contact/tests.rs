@@ -8,19 +8,7 @@ use crate::query::stationary::{stationary_distance, DistanceOptions};
 use crate::{BallCurve, CapsuleEllipse, Ellipse, RoundedPolygon};
 use core::f64::consts::TAU;
 
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
-    fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.next()
-    }
-}
+use crate::numerics::test_rng::Lcg as Rng;
 
 enum Shape {
     Ellipse(Ellipse),

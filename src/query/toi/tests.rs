@@ -5,20 +5,7 @@ use crate::numerics::math::{Pose, Vector};
 use crate::query::pair::eval_pair;
 use crate::{BallCurve, Ellipse, RoundedPolygon};
 
-/// A small deterministic generator for the randomised checks below.
-struct Lcg(u64);
-impl Lcg {
-    fn next(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
-    fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.next()
-    }
-}
+use crate::numerics::test_rng::Lcg;
 
 /// A random motion: start within `reach` of the origin at any angle, rotation centre within
 /// 0.2 of the local origin, speed up to 4·√2, spin up to `spin` rad/s.
