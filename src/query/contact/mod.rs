@@ -34,7 +34,9 @@
 //!   the arc it is the arc's minimum; otherwise the arc's minimum is at an end (a breakpoint,
 //!   already evaluated) or at one of the at most two *middle* feet, which are all found (closed
 //!   form of the multiplier where the two lie, monotone Newton from each side). The farthest foot
-//!   is never a minimum.
+//!   is never a minimum;
+//! * two ellipses (`two_ellipses`): a descent, certificates, and a branch and bound with a
+//!   second-order bound; `None` (the caller's other query) if its budget runs out.
 //!
 //! Every candidate is a value of F at an actual direction, so the smallest is the global
 //! minimum — no tolerance, no iteration cap that could cut the search short, and no difference
@@ -42,8 +44,8 @@
 //! several local minima on an arc: the middle feet are exactly those). An arc is skipped when an
 //! exact lower bound of F on it (the minimum of the linear part plus the minimum of k, each over
 //! the arc, both in closed form) exceeds the best value so far; skipping never changes the
-//! answer. Two ellipse pieces on one arc are not handled (`None`: those pairs have a strictly
-//! convex side and take the stationary distance).
+//! answer. The merge needs each polygon's edge normals to turn strictly (a vertex on a straight
+//! edge, which parry's unmodified polylines keep, makes [`contact`] answer `None`).
 //!
 //! # The manifold's points
 //!

@@ -85,6 +85,18 @@ impl Axes {
     }
 }
 
+/// Whether consecutive edge normals turn strictly counter-clockwise by less than π (at least
+/// three edges), or are opposite (a segment's two). The merge of the walk relies on it: a vertex
+/// on a straight edge (two equal normals, which parry's unmodified polylines keep) would put a
+/// breakpoint out of order.
+fn turning(normals: &[Vector]) -> bool {
+    let n = normals.len();
+    if n == 2 {
+        return normals[0].dot(normals[1]) < 0.0 && crate::numerics::math::cross(normals[0], normals[1]).abs() <= 1e-12;
+    }
+    (0..n).all(|k| crate::numerics::math::cross(normals[k], normals[if k + 1 == n { 0 } else { k + 1 }]) > 0.0)
+}
+
 /// How a side's breakpoints are faces and its pieces are named.
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
 enum Layout {
@@ -154,7 +166,7 @@ impl Placed {
                 radius,
             } => {
                 let n = vertices.len();
-                if !(2..=MAX_BREAKPOINTS).contains(&n) || normals.len() != n {
+                if !(2..=MAX_BREAKPOINTS).contains(&n) || normals.len() != n || !turning(normals) {
                     return false;
                 }
                 s.len = n;

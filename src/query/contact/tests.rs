@@ -207,3 +207,79 @@ fn flat_on_flat_gives_two_points_with_distinct_ids() {
     let tilted = Pose::new(pos12.translation, 0.1);
     assert_eq!(contact(s1, s2, &tilted, 0.02f64.cos(), None).unwrap().len, 1);
 }
+
+/// A parry polygon with a vertex on a straight edge (two equal consecutive normals, kept by
+/// `from_convex_polyline_unmodified`) is refused by the query (its merge needs strictly turning
+/// normals), and the dispatcher's answer stays exact: here the shapes overlap.
+#[test]
+fn a_vertex_on_a_straight_edge_is_refused_and_the_contact_stays_exact() {
+    use crate::SmoothDispatcher;
+    use parry2d_f64::query::QueryDispatcher;
+    use parry2d_f64::shape::ConvexPolygon;
+    let pts = [
+        Vector::new(1.0, 0.0),
+        Vector::new(2.0, 0.0),
+        Vector::new(2.0, 1.0),
+        Vector::new(0.0, 1.0),
+        Vector::new(0.0, 0.0),
+    ];
+    let poly = ConvexPolygon::from_convex_polyline_unmodified(pts.to_vec()).expect("a polygon");
+    let diamond = RoundedPolygon::new(
+        &[
+            Vector::new(0.5, 0.0),
+            Vector::new(0.0, 0.5),
+            Vector::new(-0.5, 0.0),
+            Vector::new(0.0, -0.5),
+        ],
+        0.0,
+    );
+    let shape = SupportShape::Polygon {
+        vertices: poly.points(),
+        normals: poly.normals(),
+        radius: 0.0,
+    };
+    let d = SupportShape::Polygon {
+        vertices: diamond.vertices(),
+        normals: diamond.edge_normals(),
+        radius: 0.0,
+    };
+    let pos12 = Pose::new(Vector::new(-0.2, -0.2), 0.0);
+    assert!(contact(shape, d, &pos12, 0.9998, None).is_none());
+    let c = SmoothDispatcher::default()
+        .contact(&pos12, &poly, &diamond, 10.0)
+        .unwrap()
+        .expect("a contact");
+    // The gap tracker's exact distance on the same polygon without the extra vertex.
+    let square = RoundedPolygon::new(&pts[1..], 0.0);
+    let reference = gap_distance(
+        PolySide::new(square.vertices(), square.edge_normals(), 0.0)
+            .map(Side::Poly)
+            .unwrap(),
+        PolySide::new(diamond.vertices(), diamond.edge_normals(), 0.0)
+            .map(Side::Poly)
+            .unwrap(),
+        &pos12,
+    )
+    .unwrap()
+    .0;
+    assert!((c.dist - reference).abs() < 1e-12, "{} {reference}", c.dist);
+    assert!(c.dist < 0.0);
+}
+
+/// A segment against a disc beyond its end, and two collinear capsules: the arcs are exactly π
+/// wide, where overlapping cores along every breakpoint do not mean overlapping cores.
+#[test]
+fn segments_and_discs_in_line_are_apart() {
+    let seg = [Vector::new(-1.0, 0.0), Vector::new(1.0, 0.0)];
+    let normals = [Vector::new(0.0, -1.0), Vector::new(0.0, 1.0)];
+    let segment = |radius| SupportShape::Polygon {
+        vertices: &seg,
+        normals: &normals,
+        radius,
+    };
+    let pos12 = Pose::new(Vector::new(5.0, 0.0), 0.0);
+    let c = contact(segment(0.0), SupportShape::Disc(0.5), &pos12, 0.9998, None).unwrap();
+    assert!((c.dist - 3.5).abs() < 1e-14, "{}", c.dist);
+    let c = contact(segment(0.2), segment(0.2), &pos12, 0.9998, None).unwrap();
+    assert!((c.dist - 2.6).abs() < 1e-14, "{}", c.dist);
+}

@@ -170,6 +170,10 @@ impl TwoEllipses {
         let warm = hint.filter(|_| full).map(|h| self.descend(self.at(h)));
         let mut top = 0;
         let mut covered = false;
+        // A descent's end that is not a certified local minimum: a bound for the search, and the
+        // answer only if the search finds nothing as low (a sub-arc dropped on a bound that ties
+        // the minimum to rounding).
+        let mut fallback: Option<Point> = None;
         if let Some((low, true)) = warm {
             if self.certified(&low) {
                 return Some((low.f < best).then_some((low.f, low.n)));
@@ -185,6 +189,7 @@ impl TwoEllipses {
             top = t;
             if let Some((low, _)) = warm {
                 bound = bound.min(low.f);
+                fallback = Some(low);
             }
             if let Some(h) = hint.filter(|&h| full || in_arc(a, b, h)) {
                 let ph = self.at(h);
@@ -209,6 +214,7 @@ impl TwoEllipses {
                     }
                 } else {
                     bound = bound.min(low.f);
+                    fallback = fallback.filter(|f| f.f <= low.f).or(Some(low));
                 }
             }
         }
@@ -251,6 +257,11 @@ impl TwoEllipses {
             stack[top] = (pm, pb);
             stack[top + 1] = (pa, pm);
             top += 2;
+        }
+        let scale = self.q.length() + self.e1.a.max(self.e1.b) + self.e2.a.max(self.e2.b) + self.r.abs();
+        let rounding = 64.0 * f64::EPSILON * scale;
+        if let Some(l) = fallback.filter(|l| found.is_none_or(|f| l.f < f.0 - rounding)) {
+            found = Some((l.f, l.n));
         }
         Some(found.filter(|f| f.0 < best))
     }

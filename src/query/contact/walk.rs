@@ -204,8 +204,8 @@ impl<'a> Walk<'a> {
         lin + k + r
     }
 
-    /// The minimum of F over every direction. `None` when both pieces of an arc are ellipses or
-    /// a value is not finite.
+    /// The minimum of F over every direction. `None` when a value is not finite or the search
+    /// between two ellipse pieces runs out of its budget.
     pub(crate) fn minimum(&self) -> Option<Minimum> {
         let mut best: Option<Minimum> = None;
         let mut scale = 0.0f64;
@@ -223,10 +223,12 @@ impl<'a> Walk<'a> {
         }
         // Two polygons (discs, segments): F − r is the support function of the cores' Minkowski
         // difference, r = r₁ + r₂ the same on every arc. When the cores overlap along every
-        // breakpoint (F ≥ r there), no arc holds a lower value: its only candidate, r − |q| at
-        // n = −q/|q|, would be a direction separating the cores.
+        // breakpoint (F ≥ r there) and every arc is narrower than π (a side with three edges or
+        // more), no arc holds a lower value: its only candidate, r − |q| at n = −q/|q|, would
+        // be a direction separating the cores. (An arc of exactly π — a segment against a disc
+        // or a parallel segment — can hold it with both ends at r.)
         let [s0, s1] = self.sides;
-        let polygons = s0.axes.is_none() && s1.axes.is_none() && self.len > 0;
+        let polygons = s0.axes.is_none() && s1.axes.is_none() && s0.len.max(s1.len) >= 3;
         let r_core = if polygons { s0.r[0] + s1.r[0] } else { 0.0 };
         if polygons && best.is_some_and(|b| b.value >= r_core) {
             return best;
