@@ -15,7 +15,11 @@
 //! * one root on (−b², ∞), where Φ is convex and decreasing: the **nearest** point (t > 0
 //!   outside, t < 0 inside), in the quadrant of p;
 //! * none or two roots on (−a², −b²), where Φ is convex with its minimum at a closed form:
-//!   with u = t + a², w = −(t + b²), u + w = a² − b², Φ′ = 0 at (w/u)³ = (b y₀/(a x₀))²;
+//!   with u = t + a², w = −(t + b²), u + w = a² − b², Φ′ = 0 at (w/u)³ = (b y₀/(a x₀))². The
+//!   stationary points of the support function alternate between minima and maxima around the
+//!   circle, in the counter-clockwise order nearest, farthest, right root (w small, near the
+//!   vertex (0, −b)), left root (near (a, 0)): the right root is a minimum, the left one a
+//!   maximum, and only the right one is computed;
 //! * one root below −a²: the farthest point. There the circle about p through e contains E, so
 //!   E's radius of curvature is at most |e − p|: the farthest foot is never a strict local
 //!   minimum of q·n + h_E(n), and is not computed.
@@ -191,8 +195,9 @@ pub(crate) fn nearest_feet(a: f64, b: f64, p: Vector) -> Feet {
     out
 }
 
-/// The feet with the multiplier between −a² and −b² (none, or two and their mirror images when
-/// the point is on an axis): the only feet besides the nearest and the farthest.
+/// The feet with the multiplier between −a² and −b² that can be local minima of the support
+/// function (none, or one — the other of the two there is a maximum — and, when the point is on
+/// an axis, the symmetric pairs in closed form): with the nearest, every local minimum.
 pub(crate) fn middle_feet(a: f64, b: f64, p: Vector) -> Feet {
     let f = Frame::new(a, b, p);
     let mut out = Feet::new();
@@ -216,14 +221,11 @@ pub(crate) fn middle_feet(a: f64, b: f64, p: Vector) -> Feet {
             if !dips {
                 return out;
             }
-            // Left root in u ∈ (0, u*], from u = ca (< u*: Φ(u*) ≤ 0 forces ca < u*).
-            let ul = newton_increasing(ca.min(u_star), u_star, |u| {
-                let (iu, iw) = (1.0 / u, 1.0 / (d - u));
-                let (qu, qw) = ((ca * iu).powi(2), (cb * iw).powi(2));
-                (qu + qw - 1.0, -2.0 * qu * iu + 2.0 * qw * iw)
-            });
-            f.push(&mut out, a * a * x0 / ul, -b * b * y0 / (d - ul), false, false);
-            // Right root in w ∈ (0, w*], from w = cb.
+            // The left root (u ∈ (0, u*]) is the foot next to the nearest one, towards the
+            // vertex (a, 0): the stationary points of the support function alternate between
+            // minima and maxima around the circle (nearest, farthest, right, left, in that
+            // counter-clockwise order), so it is a maximum, never wanted. The right root, in
+            // w ∈ (0, w*], from w = cb.
             let wr = newton_increasing(cb.min(w_star), w_star, |w| {
                 let (iu, iw) = (1.0 / (d - w), 1.0 / w);
                 let (qu, qw) = ((ca * iu).powi(2), (cb * iw).powi(2));
@@ -261,8 +263,9 @@ mod tests {
     use super::*;
     use core::f64::consts::TAU;
 
-    /// Every foot of p by dense sampling of g(θ) = (e(θ) − p)·e′(θ) and bisection.
-    fn sampled_feet(a: f64, b: f64, p: Vector) -> Vec<Vector> {
+    /// Every foot of p by dense sampling of g(θ) = (e(θ) − p)·e′(θ) and bisection, with whether
+    /// it is a local minimum of the distance (g from negative to positive).
+    fn sampled_feet(a: f64, b: f64, p: Vector) -> Vec<(Vector, bool)> {
         let e = |t: f64| Vector::new(a * t.cos(), b * t.sin());
         let g = |t: f64| (e(t) - p).dot(Vector::new(-a * t.sin(), b * t.cos()));
         let n = 20_000;
@@ -271,7 +274,8 @@ mod tests {
             let (mut lo, mut hi) = (TAU * i as f64 / n as f64, TAU * (i + 1) as f64 / n as f64);
             let (glo, ghi) = (g(lo), g(hi));
             if glo == 0.0 {
-                out.push(e(lo));
+                let minimum = g(lo - 1e-9) < 0.0 && g(lo + 1e-9) > 0.0;
+                out.push((e(lo), minimum));
                 continue;
             }
             if glo * ghi < 0.0 {
@@ -283,7 +287,7 @@ mod tests {
                         hi = mid;
                     }
                 }
-                out.push(e(0.5 * (lo + hi)));
+                out.push((e(0.5 * (lo + hi)), glo < 0.0));
             }
         }
         out
@@ -308,15 +312,15 @@ mod tests {
         }
         let nearest = nearest_feet(a, b, p).as_slice()[0];
         let sampled = sampled_feet(a, b, p);
-        let best = sampled.iter().map(|e| (*e - p).length()).fold(f64::INFINITY, f64::min);
+        let best = sampled.iter().map(|e| (e.0 - p).length()).fold(f64::INFINITY, f64::min);
         assert!(
             ((nearest.point - p).length() - best).abs() < 1e-9 * size,
             "{a} {b} {p:?}"
         );
-        // Every sampled foot except the farthest is found.
-        let far = sampled.iter().map(|e| (*e - p).length()).fold(0.0, f64::max);
-        for s in &sampled {
-            if (*s - p).length() > far - 1e-9 * size {
+        // Every sampled local minimum of the distance is found (a point on an axis may have
+        // local maxima among ours too).
+        for (s, minimum) in &sampled {
+            if !minimum {
                 continue;
             }
             assert!(

@@ -32,9 +32,10 @@
 //!   stationary directions are the normals at the *feet* of the normals from −q to the ellipse
 //!   ([`feet`]). The nearest foot is the minimum over every direction, so when its normal lies in
 //!   the arc it is the arc's minimum; otherwise the arc's minimum is at an end (a breakpoint,
-//!   already evaluated) or at one of the at most two *middle* feet, which are all found (closed
-//!   form of the multiplier where the two lie, monotone Newton from each side). The farthest foot
-//!   is never a minimum;
+//!   already evaluated) or at the *middle* foot that is a minimum (a point inside the evolute
+//!   has two more feet, a minimum and a maximum: the stationary points alternate around the
+//!   circle), found exactly (closed form of where the multiplier's function dips, monotone
+//!   Newton). The farthest foot is never a minimum;
 //! * two ellipses (`two_ellipses`): a descent, certificates, and a branch and bound with a
 //!   second-order bound; `None` (the caller's other query) if its budget runs out.
 //!
