@@ -260,6 +260,16 @@ fn manifold_from_contact<M, C: Default + Copy>(
     true
 }
 
+/// The dispatcher's guard around parry's manifolds: when `ok` is false (a bad pose or shape in,
+/// a non-finite contact out), the manifolds are cleared and the pair is `Unsupported`.
+fn guarded<M, C: Default + Copy>(manifolds: &mut [ContactManifold<M, C>], ok: bool) -> Result<(), Unsupported> {
+    if ok {
+        return Ok(());
+    }
+    manifolds.iter_mut().for_each(|m| m.clear());
+    Err(Unsupported)
+}
+
 /// Whether one side is a shape parry decomposes (composite, trimesh, heightfield, voxels).
 fn is_composite_like(g: &dyn Shape, t: ShapeType) -> bool {
     match t {
@@ -297,16 +307,11 @@ where
         }
         if t1 != ShapeType::Custom && t2 != ShapeType::Custom {
             // Two of parry's convex shapes: parry's manifold, behind the dispatcher's guards.
-            if !(input_guard::pose_ok(pos12) && input_guard::shapes_ok_typed(g1, t1, g2, t2)) {
-                manifolds.iter_mut().for_each(|m| m.clear());
-                return Err(Unsupported);
-            }
+            let guards = input_guard::pose_ok(pos12) && input_guard::shapes_ok_typed(g1, t1, g2, t2);
+            guarded(manifolds, guards)?;
             DefaultQueryDispatcher.contact_manifolds(pos12, g1, g2, prediction, manifolds, workspace)?;
-            if !manifolds.iter().all(input_guard::AllFinite::all_finite) {
-                manifolds.iter_mut().for_each(|m| m.clear());
-                return Err(Unsupported);
-            }
-            return Ok(());
+            let finite = manifolds.iter().all(input_guard::AllFinite::all_finite);
+            return guarded(manifolds, finite);
         }
         if manifolds.is_empty() {
             manifolds.push(ContactManifold::new());
@@ -365,10 +370,8 @@ where
             // Not ours, or our distance failed: parry (through the polygonal feature maps),
             // under the dispatcher's guards (no NaN pose or shape in, no NaN contact out).
             _ => {
-                if !(input_guard::pose_ok(pos12) && input_guard::shapes_ok(g1, g2)) {
-                    manifold.clear();
-                    return Err(Unsupported);
-                }
+                let guards = input_guard::pose_ok(pos12) && input_guard::shapes_ok(g1, g2);
+                guarded(core::slice::from_mut(manifold), guards)?;
                 DefaultQueryDispatcher.contact_manifold_convex_convex(
                     pos12,
                     g1,
@@ -389,11 +392,8 @@ where
                         manifold,
                     )?;
                 }
-                if !input_guard::AllFinite::all_finite(manifold) {
-                    manifold.clear();
-                    return Err(Unsupported);
-                }
-                Ok(())
+                let finite = input_guard::AllFinite::all_finite(manifold);
+                guarded(core::slice::from_mut(manifold), finite)
             }
         }
     }

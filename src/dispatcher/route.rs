@@ -103,7 +103,7 @@ pub(crate) fn own_curve(s: &dyn Shape) -> Option<&dyn ConvexCurve> {
 }
 
 /// Puts a triangle in counter-clockwise order; `None` when it is degenerate (or not finite).
-fn ccw_triangle(mut v: [Vector; 3]) -> Option<[Vector; 3]> {
+pub(crate) fn ccw_triangle(mut v: [Vector; 3]) -> Option<[Vector; 3]> {
     let mut area2 = 0.0;
     for i in 0..3 {
         area2 += cross(v[i], v[(i + 1) % 3]);

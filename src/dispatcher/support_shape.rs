@@ -4,7 +4,8 @@
 //! caller's [`SupportScratch`] on the stack. No curve is built.
 
 use super::input_guard;
-use crate::numerics::math::{cross, perp, Pose, Vector};
+use super::route::{box_vertices, ccw_triangle};
+use crate::numerics::math::{perp, Pose, Vector};
 use crate::parry_shape::FLAT_FEATURE_MAX_ANGLE;
 use crate::query::contact::{contact, Contact, SupportShape};
 use crate::{CapsuleEllipse, Ellipse, RoundedPolygon};
@@ -21,18 +22,13 @@ pub(crate) struct SupportScratch {
 }
 
 impl SupportScratch {
-    /// A box with these half-extents (positive, finite) dilated by `radius`: its normals are
-    /// the axes, written without a division.
-    fn cuboid(&mut self, h: Vector, radius: f64) -> Option<SupportShape<'_>> {
+    /// The box `c` (half-extents positive, finite) dilated by `radius`: its normals are the
+    /// axes, written without a division.
+    fn cuboid(&mut self, c: &Cuboid, radius: f64) -> Option<SupportShape<'_>> {
         if !(radius.is_finite() && radius >= 0.0) {
             return None;
         }
-        self.vertices = [
-            Vector::new(-h.x, -h.y),
-            Vector::new(h.x, -h.y),
-            Vector::new(h.x, h.y),
-            Vector::new(-h.x, h.y),
-        ];
+        self.vertices = box_vertices(c);
         self.normals = [-Vector::Y, Vector::X, Vector::Y, -Vector::X];
         Some(SupportShape::Polygon {
             vertices: &self.vertices,
@@ -63,18 +59,6 @@ impl SupportScratch {
             radius,
         })
     }
-}
-
-/// A triangle's vertices counter-clockwise; `None` when it is flat (or not finite).
-fn ccw(t: &Triangle) -> Option<[Vector; 3]> {
-    let area2 = cross(t.b - t.a, t.c - t.a);
-    let size2 = (t.b - t.a).length_squared().max((t.c - t.a).length_squared());
-    // False for NaN as well.
-    let fat = area2.abs() > 1e-12 * size2;
-    if !fat {
-        return None;
-    }
-    Some(if area2 > 0.0 { [t.a, t.b, t.c] } else { [t.a, t.c, t.b] })
 }
 
 /// A polygon stored with its normals (this crate's or parry's), unless a value is not finite
@@ -117,14 +101,12 @@ pub(crate) fn support_shape<'a>(s: &'a dyn Shape, scratch: &'a mut SupportScratc
         }
         ShapeType::Cuboid => {
             let c = s.as_shape::<Cuboid>()?;
-            box_ok(c).then(|| scratch.cuboid(c.half_extents, 0.0)).flatten()
+            box_ok(c).then(|| scratch.cuboid(c, 0.0)).flatten()
         }
         ShapeType::RoundCuboid => {
             let c = s.as_shape::<RoundCuboid>()?;
             let inner = &c.inner_shape;
-            box_ok(inner)
-                .then(|| scratch.cuboid(inner.half_extents, c.border_radius))
-                .flatten()
+            box_ok(inner).then(|| scratch.cuboid(inner, c.border_radius)).flatten()
         }
         ShapeType::ConvexPolygon => {
             let p = s.as_shape::<ConvexPolygon>()?;
@@ -134,10 +116,14 @@ pub(crate) fn support_shape<'a>(s: &'a dyn Shape, scratch: &'a mut SupportScratc
             let p = s.as_shape::<RoundConvexPolygon>()?;
             stored(p.inner_shape.points(), p.inner_shape.normals(), p.border_radius)
         }
-        ShapeType::Triangle => scratch.polygon(&ccw(s.as_shape::<Triangle>()?)?, 0.0),
+        ShapeType::Triangle => {
+            let t = s.as_shape::<Triangle>()?;
+            scratch.polygon(&ccw_triangle([t.a, t.b, t.c])?, 0.0)
+        }
         ShapeType::RoundTriangle => {
             let t = s.as_shape::<RoundTriangle>()?;
-            scratch.polygon(&ccw(&t.inner_shape)?, t.border_radius)
+            let t2 = &t.inner_shape;
+            scratch.polygon(&ccw_triangle([t2.a, t2.b, t2.c])?, t.border_radius)
         }
         ShapeType::Segment => {
             let sg = s.as_shape::<Segment>()?;

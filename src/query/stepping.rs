@@ -7,7 +7,31 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 use crate::error::QueryError;
+use crate::numerics::motion::motion_is_finite;
 use crate::query::toi::ToiOptions;
+use parry2d_f64::query::NonlinearRigidMotion;
+
+/// The input checks both trackers start with: `NonFinite` for a motion, a window end or an
+/// option that is NaN, infinite or (for a target or tolerance) negative; `EmptyWindow` when the
+/// window ends before it starts.
+pub(crate) fn check_window(
+    m1: &NonlinearRigidMotion,
+    m2: &NonlinearRigidMotion,
+    t0: f64,
+    t1: f64,
+    opts: &ToiOptions,
+) -> Result<(), QueryError> {
+    if !(motion_is_finite(m1) && motion_is_finite(m2) && t0.is_finite() && t1.is_finite()) {
+        return Err(QueryError::NonFinite);
+    }
+    if !opts.is_valid() {
+        return Err(QueryError::NonFinite);
+    }
+    if t1 < t0 {
+        return Err(QueryError::EmptyWindow);
+    }
+    Ok(())
+}
 
 /// How far below the target a reported contact may be, relative to the size (the `Hit`
 /// contract: D ≥ δ − 1e-12·s).

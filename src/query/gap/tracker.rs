@@ -10,9 +10,9 @@ use super::maxgap::{Contact, GapMax, Pair};
 use super::side::Side;
 use crate::error::QueryError;
 use crate::numerics::math::{rotate_cs, sin_cos, Vector};
-use crate::numerics::motion::motion_is_finite;
 use crate::query::stepping::{
-    parabola_step, LeaveWalk, CONTACT_FLOOR, EXTENSION, EXTENSION_MARGIN, EXTENSION_ROUNDS, FINE, MIN_EXTENSION,
+    check_window, parabola_step, LeaveWalk, CONTACT_FLOOR, EXTENSION, EXTENSION_MARGIN, EXTENSION_ROUNDS, FINE,
+    MIN_EXTENSION,
 };
 use crate::query::toi::circles::{circles_reach, circles_stay_apart};
 use crate::query::toi::{TimeOfImpact, ToiCost, ToiOptions, ToiStatus};
@@ -69,15 +69,7 @@ impl<'a> GapTracker<'a> {
         t1: f64,
         opts: &ToiOptions,
     ) -> Result<Self, QueryError> {
-        if !(motion_is_finite(m1) && motion_is_finite(m2) && t0.is_finite() && t1.is_finite()) {
-            return Err(QueryError::NonFinite);
-        }
-        if !opts.is_valid() {
-            return Err(QueryError::NonFinite);
-        }
-        if t1 < t0 {
-            return Err(QueryError::EmptyWindow);
-        }
+        check_window(m1, m2, t0, t1, opts)?;
         let size = side1.radius_about(Vector::ZERO).max(side2.radius_about(Vector::ZERO));
         let radius = [side1.radius_about(m1.local_center), side2.radius_about(m2.local_center)];
         let reach = circles_reach(

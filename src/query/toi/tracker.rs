@@ -10,11 +10,11 @@ use crate::curve::ConvexCurve;
 use crate::error::QueryError;
 use crate::numerics::angle::wrap_phi;
 use crate::numerics::math::{rotate_cs, sin_cos, Vector};
-use crate::numerics::motion::{motion_is_finite, PairFrame, RelativeMotion};
+use crate::numerics::motion::{PairFrame, RelativeMotion};
 use crate::query::pair::PairJet;
 use crate::query::solver::Solver;
 use crate::query::stepping::{
-    parabola_step, CONTACT_FLOOR, EXTENSION, EXTENSION_MARGIN, EXTENSION_ROUNDS, MIN_EXTENSION,
+    check_window, parabola_step, CONTACT_FLOOR, EXTENSION, EXTENSION_MARGIN, EXTENSION_ROUNDS, MIN_EXTENSION,
 };
 use crate::query::toi::ToiOptions;
 use core::f64::consts::TAU;
@@ -80,16 +80,7 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
         t1: f64,
         opts: &ToiOptions,
     ) -> Result<Self, QueryError> {
-        if !(motion_is_finite(m1) && motion_is_finite(m2) && t0.is_finite() && t1.is_finite()) {
-            return Err(QueryError::NonFinite);
-        }
-        if !opts.is_valid() {
-            // A target or tolerance that is NaN, infinite or negative.
-            return Err(QueryError::NonFinite);
-        }
-        if t1 < t0 {
-            return Err(QueryError::EmptyWindow);
-        }
+        check_window(m1, m2, t0, t1, opts)?;
         // A disc centred at its origin and spinning about it (support_dd_bound() = 0: h'' ≡ 0,
         // so h is constant) looks the same at every angle: track it without its spin (one
         // sine and cosine less per frame) and turn its witnesses back at the end.
