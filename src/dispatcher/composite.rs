@@ -1,130 +1,275 @@
-//! Composite shapes (compound, polyline, trimesh, heightfield) on either side of a query:
-//! parry's composite helpers, called with [`SmoothDispatcher`] as the inner dispatcher so that
-//! every sub-pair comes back to it.
+//! Composite shapes (compound, polyline, trimesh, heightfield, voxels) on either side of a
+//! query: parry's composite helpers, called with [`crate::SmoothDispatcher`] as the inner dispatcher so
+//! that every sub-pair comes back to it.
+//!
+//! The helpers are written once, as the hidden macro `composite_helpers!`, and instantiated
+//! here for parry2d-f64 and in the f32 package (`smooth-ccd2d-f32`) for parry2d with its own
+//! dispatcher: the two parry builds are distinct crates with the same API, and the routing of
+//! composite pairs is the same text for both.
 
-use super::SmoothDispatcher;
-use crate::numerics::math::{Pose, Real, Vector};
-use parry2d_f64::query::details::ShapeCastOptions;
-use parry2d_f64::query::{
-    self, ClosestPoints, Contact, NonlinearRigidMotion, ShapeCastHit, ShapeDistance, ShapeIntersection, Unsupported,
-};
-use parry2d_f64::shape::Shape;
+/// Expands, in the module it is called in, to the composite helpers of a dispatcher `$dispatcher`
+/// (a path to a type implementing the `$parry` crate's `QueryDispatcher` and
+/// `PersistentQueryDispatcher<M, C>` for every `M: Default + Clone + Send + Sync` and
+/// `C: Default + Copy + Send + Sync`): `composite_intersection`, `composite_distance`,
+/// `composite_contact`, `composite_closest_points`, `composite_cast`,
+/// `composite_cast_nonlinear` (each `Err(Unsupported)` when neither side is composite),
+/// `is_composite_like` and `composite_manifolds` (parry's `DefaultQueryDispatcher` routing of
+/// composite-like shapes, with `$dispatcher` answering the sub-pairs), and `single_manifold` (the
+/// manifold list of a convex pair made one manifold with no sub-shapes). Not a public API: the
+/// f32 package's use of it is its only purpose.
+#[doc(hidden)]
+#[macro_export]
+macro_rules! composite_helpers {
+    ($parry:ident, $dispatcher:path) => {
+        use $parry::math::{Pose, Real, Vector};
+        use $parry::query::details::{self, ShapeCastOptions};
+        use $parry::query::{
+            ClosestPoints, Contact, ContactManifold, ContactManifoldsWorkspace, NonlinearRigidMotion, ShapeCastHit,
+            ShapeDistance, ShapeIntersection, Unsupported,
+        };
+        use $parry::shape::{Shape, ShapeType};
 
-pub(crate) fn composite_intersection(
-    d: &SmoothDispatcher,
-    pos12: &Pose,
-    g1: &dyn Shape,
-    g2: &dyn Shape,
-) -> Result<ShapeIntersection, Unsupported> {
-    if let Some(c1) = g1.as_composite_shape() {
-        Ok(query::details::intersection_test_composite_shape_shape(
-            d, pos12, c1, g2,
-        ))
-    } else if let Some(c2) = g2.as_composite_shape() {
-        Ok(query::details::intersection_test_shape_composite_shape(
-            d, pos12, g1, c2,
-        ))
-    } else {
-        Err(Unsupported)
-    }
+        pub(crate) fn composite_intersection(
+            d: &$dispatcher,
+            pos12: &Pose,
+            g1: &dyn Shape,
+            g2: &dyn Shape,
+        ) -> Result<ShapeIntersection, Unsupported> {
+            if let Some(c1) = g1.as_composite_shape() {
+                Ok(details::intersection_test_composite_shape_shape(d, pos12, c1, g2))
+            } else if let Some(c2) = g2.as_composite_shape() {
+                Ok(details::intersection_test_shape_composite_shape(d, pos12, g1, c2))
+            } else {
+                Err(Unsupported)
+            }
+        }
+
+        pub(crate) fn composite_distance(
+            d: &$dispatcher,
+            pos12: &Pose,
+            g1: &dyn Shape,
+            g2: &dyn Shape,
+        ) -> Result<ShapeDistance, Unsupported> {
+            if let Some(c1) = g1.as_composite_shape() {
+                Ok(details::distance_composite_shape_shape(d, pos12, c1, g2))
+            } else if let Some(c2) = g2.as_composite_shape() {
+                Ok(details::distance_shape_composite_shape(d, pos12, g1, c2))
+            } else {
+                Err(Unsupported)
+            }
+        }
+
+        pub(crate) fn composite_contact(
+            d: &$dispatcher,
+            pos12: &Pose,
+            g1: &dyn Shape,
+            g2: &dyn Shape,
+            prediction: Real,
+        ) -> Result<Option<Contact>, Unsupported> {
+            if let Some(c1) = g1.as_composite_shape() {
+                Ok(details::contact_composite_shape_shape(
+                    d, pos12, c1, g2, prediction,
+                ))
+            } else if let Some(c2) = g2.as_composite_shape() {
+                Ok(details::contact_shape_composite_shape(
+                    d, pos12, g1, c2, prediction,
+                ))
+            } else {
+                Err(Unsupported)
+            }
+        }
+
+        pub(crate) fn composite_closest_points(
+            d: &$dispatcher,
+            pos12: &Pose,
+            g1: &dyn Shape,
+            g2: &dyn Shape,
+            max_dist: Real,
+        ) -> Result<ClosestPoints, Unsupported> {
+            if let Some(c1) = g1.as_composite_shape() {
+                Ok(details::closest_points_composite_shape_shape(
+                    d, pos12, c1, g2, max_dist,
+                ))
+            } else if let Some(c2) = g2.as_composite_shape() {
+                Ok(details::closest_points_shape_composite_shape(
+                    d, pos12, g1, c2, max_dist,
+                ))
+            } else {
+                Err(Unsupported)
+            }
+        }
+
+        pub(crate) fn composite_cast(
+            d: &$dispatcher,
+            pos12: &Pose,
+            vel12: Vector,
+            g1: &dyn Shape,
+            g2: &dyn Shape,
+            options: ShapeCastOptions,
+        ) -> Result<Option<ShapeCastHit>, Unsupported> {
+            if let Some(c1) = g1.as_composite_shape() {
+                Ok(details::cast_shapes_composite_shape_shape(
+                    d, pos12, vel12, c1, g2, options,
+                ))
+            } else if let Some(c2) = g2.as_composite_shape() {
+                Ok(details::cast_shapes_shape_composite_shape(
+                    d, pos12, vel12, g1, c2, options,
+                ))
+            } else {
+                Err(Unsupported)
+            }
+        }
+
+        #[allow(clippy::too_many_arguments)]
+        pub(crate) fn composite_cast_nonlinear(
+            d: &$dispatcher,
+            m1: &NonlinearRigidMotion,
+            g1: &dyn Shape,
+            m2: &NonlinearRigidMotion,
+            g2: &dyn Shape,
+            t0: Real,
+            t1: Real,
+            stop: bool,
+        ) -> Result<Option<ShapeCastHit>, Unsupported> {
+            if let Some(c1) = g1.as_composite_shape() {
+                Ok(details::cast_shapes_nonlinear_composite_shape_shape(
+                    d, m1, c1, m2, g2, t0, t1, stop,
+                ))
+            } else if let Some(c2) = g2.as_composite_shape() {
+                Ok(details::cast_shapes_nonlinear_shape_composite_shape(
+                    d, m1, g1, m2, c2, t0, t1, stop,
+                ))
+            } else {
+                Err(Unsupported)
+            }
+        }
+
+        /// Whether one side is a shape parry decomposes (composite, trimesh, heightfield, voxels).
+        pub(crate) fn is_composite_like(g: &dyn Shape, t: ShapeType) -> bool {
+            match t {
+                ShapeType::Compound
+                | ShapeType::Polyline
+                | ShapeType::TriMesh
+                | ShapeType::HeightField
+                | ShapeType::Voxels => true,
+                // A user's shape may be a composite; parry's other shapes are not.
+                ShapeType::Custom => g.as_composite_shape().is_some(),
+                _ => false,
+            }
+        }
+
+        /// parry's `DefaultQueryDispatcher::contact_manifolds` for composite-like shapes, with `d` as
+        /// the dispatcher of the sub-pairs.
+        pub(crate) fn composite_manifolds<M, C>(
+            d: &$dispatcher,
+            pos12: &Pose,
+            g1: &dyn Shape,
+            g2: &dyn Shape,
+            prediction: Real,
+            manifolds: &mut Vec<ContactManifold<M, C>>,
+            workspace: &mut Option<ContactManifoldsWorkspace>,
+        ) where
+            M: Default + Clone + Send + Sync,
+            C: Default + Copy + Send + Sync,
+        {
+            let composite1 = g1.as_composite_shape();
+            let composite2 = g2.as_composite_shape();
+            if let (Some(c1), Some(c2)) = (composite1, composite2) {
+                details::contact_manifolds_composite_shape_composite_shape(
+                    d, pos12, c1, c2, prediction, manifolds, workspace,
+                );
+                return;
+            }
+            match (g1.shape_type(), g2.shape_type()) {
+                (ShapeType::TriMesh, _) | (_, ShapeType::TriMesh) => {
+                    details::contact_manifolds_trimesh_shape_shapes(d, pos12, g1, g2, prediction, manifolds, workspace);
+                }
+                (ShapeType::HeightField, _) => match (composite2, g1.as_heightfield()) {
+                    (Some(c2), Some(hf1)) => details::contact_manifolds_heightfield_composite_shape(
+                        d,
+                        pos12,
+                        &pos12.inverse(),
+                        hf1,
+                        c2,
+                        prediction,
+                        manifolds,
+                        workspace,
+                        false,
+                    ),
+                    _ => details::contact_manifolds_heightfield_shape_shapes(
+                        d, pos12, g1, g2, prediction, manifolds, workspace,
+                    ),
+                },
+                (_, ShapeType::HeightField) => match (composite1, g2.as_heightfield()) {
+                    (Some(c1), Some(hf2)) => details::contact_manifolds_heightfield_composite_shape(
+                        d,
+                        &pos12.inverse(),
+                        pos12,
+                        hf2,
+                        c1,
+                        prediction,
+                        manifolds,
+                        workspace,
+                        true,
+                    ),
+                    _ => details::contact_manifolds_heightfield_shape_shapes(
+                        d, pos12, g1, g2, prediction, manifolds, workspace,
+                    ),
+                },
+                (ShapeType::Voxels, ShapeType::Voxels) => {
+                    details::contact_manifolds_voxels_voxels_shapes(d, pos12, g1, g2, prediction, manifolds, workspace)
+                }
+                (ShapeType::Voxels, ShapeType::Ball) | (ShapeType::Ball, ShapeType::Voxels) => {
+                    details::contact_manifolds_voxels_ball_shapes(pos12, g1, g2, prediction, manifolds)
+                }
+                (ShapeType::Voxels, _) | (_, ShapeType::Voxels) => {
+                    if composite1.is_some() || composite2.is_some() {
+                        details::contact_manifolds_voxels_composite_shape_shapes(
+                            d, pos12, g1, g2, prediction, manifolds, workspace,
+                        )
+                    } else {
+                        details::contact_manifolds_voxels_shape_shapes(
+                            d, pos12, g1, g2, prediction, manifolds, workspace,
+                        )
+                    }
+                }
+                _ => {
+                    if let Some(c1) = composite1 {
+                        details::contact_manifolds_composite_shape_shape(
+                            d, pos12, c1, g2, prediction, manifolds, workspace, false,
+                        );
+                    } else if let Some(c2) = composite2 {
+                        details::contact_manifolds_composite_shape_shape(
+                            d,
+                            &pos12.inverse(),
+                            c2,
+                            g1,
+                            prediction,
+                            manifolds,
+                            workspace,
+                            true,
+                        );
+                    }
+                }
+            }
+        }
+
+        /// The manifold list of a convex pair made one manifold (the first, kept for its data,
+        /// or a new one) with no sub-shapes.
+        pub(crate) fn single_manifold<M: Default + Clone, C: Default + Copy>(
+            manifolds: &mut Vec<ContactManifold<M, C>>,
+        ) -> &mut ContactManifold<M, C> {
+            if manifolds.is_empty() {
+                manifolds.push(ContactManifold::new());
+            }
+            manifolds.truncate(1);
+            let manifold = &mut manifolds[0];
+            manifold.subshape1 = 0;
+            manifold.subshape2 = 0;
+            manifold.subshape_poses = None;
+            manifold
+        }
+    };
 }
 
-pub(crate) fn composite_distance(
-    d: &SmoothDispatcher,
-    pos12: &Pose,
-    g1: &dyn Shape,
-    g2: &dyn Shape,
-) -> Result<ShapeDistance, Unsupported> {
-    if let Some(c1) = g1.as_composite_shape() {
-        Ok(query::details::distance_composite_shape_shape(d, pos12, c1, g2))
-    } else if let Some(c2) = g2.as_composite_shape() {
-        Ok(query::details::distance_shape_composite_shape(d, pos12, g1, c2))
-    } else {
-        Err(Unsupported)
-    }
-}
-
-pub(crate) fn composite_contact(
-    d: &SmoothDispatcher,
-    pos12: &Pose,
-    g1: &dyn Shape,
-    g2: &dyn Shape,
-    prediction: Real,
-) -> Result<Option<Contact>, Unsupported> {
-    if let Some(c1) = g1.as_composite_shape() {
-        Ok(query::details::contact_composite_shape_shape(
-            d, pos12, c1, g2, prediction,
-        ))
-    } else if let Some(c2) = g2.as_composite_shape() {
-        Ok(query::details::contact_shape_composite_shape(
-            d, pos12, g1, c2, prediction,
-        ))
-    } else {
-        Err(Unsupported)
-    }
-}
-
-pub(crate) fn composite_closest_points(
-    d: &SmoothDispatcher,
-    pos12: &Pose,
-    g1: &dyn Shape,
-    g2: &dyn Shape,
-    max_dist: Real,
-) -> Result<ClosestPoints, Unsupported> {
-    if let Some(c1) = g1.as_composite_shape() {
-        Ok(query::details::closest_points_composite_shape_shape(
-            d, pos12, c1, g2, max_dist,
-        ))
-    } else if let Some(c2) = g2.as_composite_shape() {
-        Ok(query::details::closest_points_shape_composite_shape(
-            d, pos12, g1, c2, max_dist,
-        ))
-    } else {
-        Err(Unsupported)
-    }
-}
-
-pub(crate) fn composite_cast(
-    d: &SmoothDispatcher,
-    pos12: &Pose,
-    vel12: Vector,
-    g1: &dyn Shape,
-    g2: &dyn Shape,
-    options: ShapeCastOptions,
-) -> Result<Option<ShapeCastHit>, Unsupported> {
-    if let Some(c1) = g1.as_composite_shape() {
-        Ok(query::details::cast_shapes_composite_shape_shape(
-            d, pos12, vel12, c1, g2, options,
-        ))
-    } else if let Some(c2) = g2.as_composite_shape() {
-        Ok(query::details::cast_shapes_shape_composite_shape(
-            d, pos12, vel12, g1, c2, options,
-        ))
-    } else {
-        Err(Unsupported)
-    }
-}
-
-#[allow(clippy::too_many_arguments)]
-pub(crate) fn composite_cast_nonlinear(
-    d: &SmoothDispatcher,
-    m1: &NonlinearRigidMotion,
-    g1: &dyn Shape,
-    m2: &NonlinearRigidMotion,
-    g2: &dyn Shape,
-    t0: Real,
-    t1: Real,
-    stop: bool,
-) -> Result<Option<ShapeCastHit>, Unsupported> {
-    if let Some(c1) = g1.as_composite_shape() {
-        Ok(query::details::cast_shapes_nonlinear_composite_shape_shape(
-            d, m1, c1, m2, g2, t0, t1, stop,
-        ))
-    } else if let Some(c2) = g2.as_composite_shape() {
-        Ok(query::details::cast_shapes_nonlinear_shape_composite_shape(
-            d, m1, g1, m2, c2, t0, t1, stop,
-        ))
-    } else {
-        Err(Unsupported)
-    }
-}
+composite_helpers!(parry2d_f64, crate::SmoothDispatcher);

@@ -49,6 +49,7 @@
 //! contacts while the pose changes by less than its thresholds, which makes smooth bodies roll
 //! over small facets).
 
+use super::composite::{composite_manifolds, is_composite_like, single_manifold};
 use super::input_guard;
 use super::parry_fallback::{pair_size, parry_within, pushed_together, TOUCH_PUSH};
 use super::route::{own_curve, route, RouteScratch};
@@ -60,13 +61,7 @@ use crate::parry_shape::FLAT_FEATURE_MAX_ANGLE;
 use crate::query::contact::{Contact, Feature};
 use crate::query::stationary::StationaryDistance;
 use crate::SmoothDispatcher;
-use parry2d_f64::query::details::{
-    contact_manifolds_composite_shape_composite_shape, contact_manifolds_composite_shape_shape,
-    contact_manifolds_heightfield_composite_shape, contact_manifolds_heightfield_shape_shapes,
-    contact_manifolds_trimesh_shape_shapes, contact_manifolds_voxels_ball_shapes,
-    contact_manifolds_voxels_composite_shape_shapes, contact_manifolds_voxels_shape_shapes,
-    contact_manifolds_voxels_voxels_shapes, NormalConstraints, NormalConstraintsPair,
-};
+use parry2d_f64::query::details::{NormalConstraints, NormalConstraintsPair};
 use parry2d_f64::query::{
     ContactManifold, ContactManifoldsWorkspace, DefaultQueryDispatcher, PersistentQueryDispatcher, TrackedContact,
     Unsupported,
@@ -270,18 +265,6 @@ fn guarded<M, C: Default + Copy>(manifolds: &mut [ContactManifold<M, C>], ok: bo
     Err(Unsupported)
 }
 
-/// Whether one side is a shape parry decomposes (composite, trimesh, heightfield, voxels).
-fn is_composite_like(g: &dyn Shape, t: ShapeType) -> bool {
-    match t {
-        ShapeType::Compound | ShapeType::Polyline | ShapeType::TriMesh | ShapeType::HeightField | ShapeType::Voxels => {
-            true
-        }
-        // A user's shape may be a composite; parry's other shapes are not.
-        ShapeType::Custom => g.as_composite_shape().is_some(),
-        _ => false,
-    }
-}
-
 impl<M, C> PersistentQueryDispatcher<M, C> for SmoothDispatcher
 where
     M: Default + Clone + Send + Sync,
@@ -313,14 +296,7 @@ where
             let finite = manifolds.iter().all(input_guard::AllFinite::all_finite);
             return guarded(manifolds, finite);
         }
-        if manifolds.is_empty() {
-            manifolds.push(ContactManifold::new());
-        }
-        manifolds.truncate(1);
-        let manifold = &mut manifolds[0];
-        manifold.subshape1 = 0;
-        manifold.subshape2 = 0;
-        manifold.subshape_poses = None;
+        let manifold = single_manifold(manifolds);
         self.contact_manifold_convex_convex(pos12, g1, g2, None, None, prediction, manifold)
     }
 
@@ -441,90 +417,6 @@ where
         return Ok(());
     }
     Ok(())
-}
-
-/// parry's `DefaultQueryDispatcher::contact_manifolds` for composite-like shapes, with `d` as
-/// the dispatcher of the sub-pairs.
-fn composite_manifolds<M, C>(
-    d: &SmoothDispatcher,
-    pos12: &Pose,
-    g1: &dyn Shape,
-    g2: &dyn Shape,
-    prediction: Real,
-    manifolds: &mut Vec<ContactManifold<M, C>>,
-    workspace: &mut Option<ContactManifoldsWorkspace>,
-) where
-    M: Default + Clone + Send + Sync,
-    C: Default + Copy + Send + Sync,
-{
-    let composite1 = g1.as_composite_shape();
-    let composite2 = g2.as_composite_shape();
-    if let (Some(c1), Some(c2)) = (composite1, composite2) {
-        contact_manifolds_composite_shape_composite_shape(d, pos12, c1, c2, prediction, manifolds, workspace);
-        return;
-    }
-    match (g1.shape_type(), g2.shape_type()) {
-        (ShapeType::TriMesh, _) | (_, ShapeType::TriMesh) => {
-            contact_manifolds_trimesh_shape_shapes(d, pos12, g1, g2, prediction, manifolds, workspace);
-        }
-        (ShapeType::HeightField, _) => match (composite2, g1.as_heightfield()) {
-            (Some(c2), Some(hf1)) => contact_manifolds_heightfield_composite_shape(
-                d,
-                pos12,
-                &pos12.inverse(),
-                hf1,
-                c2,
-                prediction,
-                manifolds,
-                workspace,
-                false,
-            ),
-            _ => contact_manifolds_heightfield_shape_shapes(d, pos12, g1, g2, prediction, manifolds, workspace),
-        },
-        (_, ShapeType::HeightField) => match (composite1, g2.as_heightfield()) {
-            (Some(c1), Some(hf2)) => contact_manifolds_heightfield_composite_shape(
-                d,
-                &pos12.inverse(),
-                pos12,
-                hf2,
-                c1,
-                prediction,
-                manifolds,
-                workspace,
-                true,
-            ),
-            _ => contact_manifolds_heightfield_shape_shapes(d, pos12, g1, g2, prediction, manifolds, workspace),
-        },
-        (ShapeType::Voxels, ShapeType::Voxels) => {
-            contact_manifolds_voxels_voxels_shapes(d, pos12, g1, g2, prediction, manifolds, workspace)
-        }
-        (ShapeType::Voxels, ShapeType::Ball) | (ShapeType::Ball, ShapeType::Voxels) => {
-            contact_manifolds_voxels_ball_shapes(pos12, g1, g2, prediction, manifolds)
-        }
-        (ShapeType::Voxels, _) | (_, ShapeType::Voxels) => {
-            if composite1.is_some() || composite2.is_some() {
-                contact_manifolds_voxels_composite_shape_shapes(d, pos12, g1, g2, prediction, manifolds, workspace)
-            } else {
-                contact_manifolds_voxels_shape_shapes(d, pos12, g1, g2, prediction, manifolds, workspace)
-            }
-        }
-        _ => {
-            if let Some(c1) = composite1 {
-                contact_manifolds_composite_shape_shape(d, pos12, c1, g2, prediction, manifolds, workspace, false);
-            } else if let Some(c2) = composite2 {
-                contact_manifolds_composite_shape_shape(
-                    d,
-                    &pos12.inverse(),
-                    c2,
-                    g1,
-                    prediction,
-                    manifolds,
-                    workspace,
-                    true,
-                );
-            }
-        }
-    }
 }
 
 #[cfg(test)]

@@ -1,13 +1,13 @@
 //! parry's traits for [`CapsuleEllipse`]: generic ray cast and projection, its segment as a
 //! flat feature, exact mass.
 
-use super::custom_shape_common;
 use super::features::curve_feature;
 use super::mass::{capsule_ellipse_moments, mass_from_moments};
 use super::projection::{project_on_curve, project_on_curve_with_feature};
 use super::ray::piecewise_ray;
 use super::{aabb_ccd_thickness, curve_aabb};
 use crate::curve::ConvexCurve;
+use crate::custom_shape_common;
 use crate::numerics::math::unit_or_x;
 use crate::numerics::math::{Real, Vector};
 use crate::CapsuleEllipse;

@@ -1,11 +1,11 @@
 //! parry's traits for [`CustomCurve`], generically from the wrapped curve.
 
-use super::custom_shape_common;
 use super::features::curve_feature;
 use super::mass::curve_mass;
 use super::projection::{project_on_curve, project_on_curve_with_feature};
 use super::ray::piecewise_ray;
 use super::{aabb_ccd_thickness, curve_aabb};
+use crate::custom_shape_common;
 use crate::numerics::math::unit_or_x;
 use crate::numerics::math::{Real, Vector};
 use crate::CustomCurve;

@@ -1,9 +1,9 @@
 //! parry's traits for [`Ellipse`]: closed-form ray cast, Eberly's projection, exact mass.
 
-use super::custom_shape_common;
 use super::features::tangent_feature;
 use super::projection::ellipse_closest_point;
 use crate::curve::ConvexCurve;
+use crate::custom_shape_common;
 use crate::numerics::math::unit_or_x;
 use crate::numerics::math::{Real, Vector};
 use crate::Ellipse;

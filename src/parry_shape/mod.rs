@@ -76,7 +76,11 @@ use parry2d_f64::bounding_volume::Aabb;
 
 /// The methods of parry's `Shape` that are the same for every shape of this crate: a `Custom`
 /// shape, convex, its own support map and polygonal feature map (with no border radius), cloned
-/// as itself.
+/// as itself. The names (`Shape`, `ShapeType`, `TypedShape`, `SupportMap`, `PolygonalFeatureMap`,
+/// `Real`) are those in scope where it is called: parry2d-f64's here, parry2d's in the f32
+/// package (its only use outside this crate; not a public API).
+#[doc(hidden)]
+#[macro_export]
 macro_rules! custom_shape_common {
     () => {
         fn clone_dyn(&self) -> Box<dyn Shape> {
@@ -104,7 +108,6 @@ macro_rules! custom_shape_common {
         }
     };
 }
-pub(crate) use custom_shape_common;
 
 /// The local AABB of a curve from its support points along ±x and ±y.
 pub(crate) fn curve_aabb(c: &dyn ConvexCurve) -> Aabb {

@@ -2,11 +2,11 @@
 //! minus the radius), parry's `RoundConvexPolygon` features, exact mass.
 
 use super::aabb_ccd_thickness;
-use super::custom_shape_common;
 use super::mass::{mass_from_moments, rounded_polygon_moments};
 use super::ray::curve_ray;
 use crate::curve::pieces::piece_index;
 use crate::curve::ConvexCurve;
+use crate::custom_shape_common;
 use crate::numerics::math::unit_or_x;
 use crate::numerics::math::{Real, Vector};
 use crate::RoundedPolygon;

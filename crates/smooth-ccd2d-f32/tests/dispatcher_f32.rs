@@ -1,0 +1,281 @@
+//! The f32 dispatcher's routes: this package's pairs answer as the f64 dispatcher on the widened
+//! inputs, rounded once; parry's own pairs are parry2d's untouched; composites decompose with
+//! the f32 dispatcher inside; contact manifolds keep rapier's per-contact data by feature id;
+//! bad input is an error, never a NaN.
+
+#[path = "../../../tests/common/mod.rs"]
+mod common;
+mod common32;
+
+use common32::{pose64, v64};
+use parry2d::math::{Pose, Vector};
+use parry2d::query::{
+    ClosestPoints, ContactManifold, DefaultQueryDispatcher, PersistentQueryDispatcher, QueryDispatcher,
+    ShapeCastOptions,
+};
+use parry2d::shape::{Ball, Compound, ConvexPolygon, Cuboid, HeightField, Shape, SharedShape};
+use parry2d_f64::query::{PersistentQueryDispatcher as _, QueryDispatcher as _};
+use smooth_ccd2d_f32::{CapsuleEllipse, Ellipse, RoundedPolygon, SmoothDispatcher};
+
+/// A pair: (shape 1 in f32, the same in f64, shape 2 in f32, the same in f64).
+type Pair = (
+    Box<dyn Shape>,
+    Box<dyn parry2d_f64::shape::Shape>,
+    Box<dyn Shape>,
+    Box<dyn parry2d_f64::shape::Shape>,
+);
+
+/// The pairs checked.
+fn pairs() -> Vec<Pair> {
+    let e = Ellipse::new(0.5, 0.2);
+    let h = RoundedPolygon::regular(7, 0.6, 0.05);
+    let c = CapsuleEllipse::new(0.3, 0.4, 0.5);
+    let tri = [Vector::new(-0.4, -0.3), Vector::new(0.5, -0.2), Vector::new(0.0, 0.6)];
+    let poly = ConvexPolygon::from_convex_polyline(tri.to_vec()).expect("a triangle");
+    let poly64 = parry2d_f64::shape::ConvexPolygon::from_convex_polyline(tri.iter().map(|&v| v64(v)).collect())
+        .expect("a triangle");
+    vec![
+        (
+            Box::new(e),
+            Box::new(*e.as_f64()),
+            Box::new(Cuboid::new(Vector::new(0.4, 0.3))),
+            Box::new(parry2d_f64::shape::Cuboid::new(v64(Vector::new(0.4, 0.3)))),
+        ),
+        (
+            Box::new(h.clone()),
+            Box::new(h.as_f64().clone()),
+            Box::new(Ball::new(0.25)),
+            Box::new(parry2d_f64::shape::Ball::new(0.25)),
+        ),
+        (
+            Box::new(c.clone()),
+            Box::new(c.as_f64().clone()),
+            Box::new(poly),
+            Box::new(poly64),
+        ),
+        (
+            Box::new(h.clone()),
+            Box::new(h.as_f64().clone()),
+            Box::new(e),
+            Box::new(*e.as_f64()),
+        ),
+    ]
+}
+
+fn poses() -> Vec<Pose> {
+    (0..24)
+        .map(|k| {
+            let a = k as f32 * 0.61;
+            Pose::new(Vector::new(a.cos(), a.sin()) * (0.4 + 0.05 * k as f32), 0.37 * k as f32)
+        })
+        .collect()
+}
+
+/// Every query of every pair: the f64 answer for the widened inputs, rounded.
+#[test]
+fn our_pairs_answer_as_the_f64_dispatcher_rounded() {
+    let (d32, d64) = (SmoothDispatcher::default(), smooth_ccd2d::SmoothDispatcher::default());
+    let mut n = 0;
+    for (g1, w1, g2, w2) in pairs() {
+        for pos in poses() {
+            let p = pose64(&pos);
+            n += 1;
+            let i32 = d32.intersection_test(&pos, &*g1, &*g2).expect("intersection");
+            let i64 = d64.intersection_test(&p, &*w1, &*w2).expect("intersection");
+            assert_eq!(i32.intersecting, i64.intersecting);
+            let dist32 = d32.distance(&pos, &*g1, &*g2).expect("distance").distance;
+            let dist64 = d64.distance(&p, &*w1, &*w2).expect("distance").distance;
+            assert_eq!(dist32, dist64 as f32);
+            let c32 = d32.contact(&pos, &*g1, &*g2, 1.0).expect("contact");
+            let c64 = d64.contact(&p, &*w1, &*w2, 1.0).expect("contact");
+            assert_eq!(c32.map(|c| c.dist), c64.map(|c| c.dist as f32));
+            assert_eq!(c32.map(|c| c.point1.x), c64.map(|c| c.point1.x as f32));
+            match (
+                d32.closest_points(&pos, &*g1, &*g2, 1.0).expect("closest"),
+                d64.closest_points(&p, &*w1, &*w2, 1.0).expect("closest"),
+            ) {
+                (ClosestPoints::WithinMargin(a, _), parry2d_f64::query::ClosestPoints::WithinMargin(b, _)) => {
+                    assert_eq!(a.x, b.x as f32)
+                }
+                (ClosestPoints::Intersecting, parry2d_f64::query::ClosestPoints::Intersecting)
+                | (ClosestPoints::Disjoint, parry2d_f64::query::ClosestPoints::Disjoint) => {}
+                (a, b) => panic!("closest points differ: {a:?} / {b:?}"),
+            }
+            let vel = Vector::new(-pos.translation.x, -pos.translation.y) * 2.0;
+            let opts = ShapeCastOptions::with_max_time_of_impact(1.0);
+            let h32 = d32.cast_shapes(&pos, vel, &*g1, &*g2, opts).expect("cast");
+            let opts64 = parry2d_f64::query::ShapeCastOptions::with_max_time_of_impact(1.0);
+            let h64 = d64.cast_shapes(&p, v64(vel), &*w1, &*w2, opts64).expect("cast");
+            assert_eq!(h32.is_some(), h64.is_some());
+            if let (Some(a), Some(b)) = (h32, h64) {
+                assert!(
+                    a.time_of_impact as f64 <= b.time_of_impact,
+                    "{} {} {:?}",
+                    a.time_of_impact,
+                    b.time_of_impact,
+                    b.status
+                );
+                assert!(
+                    b.time_of_impact - (a.time_of_impact as f64) <= f32::EPSILON as f64 * b.time_of_impact,
+                    "{} {} {:?}",
+                    a.time_of_impact,
+                    b.time_of_impact,
+                    b.status
+                );
+            }
+        }
+    }
+    println!("f32 dispatcher = f64 dispatcher rounded: {n} pair poses, every query");
+}
+
+/// A pair with none of this package's shapes is parry2d's, answer for answer.
+#[test]
+fn parry_pairs_are_parrys_own() {
+    let (a, b) = (Cuboid::new(Vector::new(0.5, 0.2)), Ball::new(0.3));
+    for pos in poses() {
+        let ours = SmoothDispatcher::default().contact(&pos, &a, &b, 0.5).expect("contact");
+        let parry = DefaultQueryDispatcher.contact(&pos, &a, &b, 0.5).expect("contact");
+        assert_eq!(ours.map(|c| (c.dist, c.point1)), parry.map(|c| (c.dist, c.point1)));
+    }
+}
+
+/// An ellipse inside a compound and an ellipse on a heightfield: the composite helpers call the
+/// f32 dispatcher for each part, so the contacts are the exact ones.
+#[test]
+fn composites_decompose_with_the_f32_dispatcher() {
+    let e = Ellipse::new(0.5, 0.2);
+    let compound = Compound::new(vec![
+        (Pose::translation(-1.0, 0.0), SharedShape::new(e)),
+        (Pose::translation(1.0, 0.0), SharedShape::cuboid(0.2, 0.2)),
+    ]);
+    let ball = Ball::new(0.25);
+    // The ball 0.1 above the compound's ellipse (top at y = 0.2).
+    let pos = Pose::translation(-1.0, 0.55);
+    let c = SmoothDispatcher::default()
+        .contact(&pos, &compound, &ball, 0.5)
+        .expect("contact")
+        .expect("within");
+    assert!((c.dist - 0.1).abs() < 1e-6, "{}", c.dist);
+    let heights = vec![0.0; 11];
+    let ground = HeightField::new(heights, Vector::new(10.0, 1.0));
+    // The ellipse lying on the flat heightfield, 0.01 into it.
+    let pos = Pose::translation(0.3, 0.19);
+    let mut manifolds: Vec<ContactManifold<(), ()>> = Vec::new();
+    SmoothDispatcher::default()
+        .contact_manifolds(&pos, &ground, &e, 0.05, &mut manifolds, &mut None)
+        .expect("manifolds");
+    let deepest = manifolds
+        .iter()
+        .flat_map(|m| m.points.iter().map(move |p| (m.local_n1, p.dist)))
+        .min_by(|a, b| a.1.total_cmp(&b.1))
+        .expect("a contact");
+    assert!((deepest.0 - Vector::Y).length() < 1e-6, "{:?}", deepest.0);
+    assert!((deepest.1 + 0.01).abs() < 1e-6, "{}", deepest.1);
+    // The same manifolds as the f64 dispatcher's on the f64 heightfield (the neighbouring
+    // segment's end gives a predicted contact too, in f64 as in parry), to the f32 rounding of
+    // the sub-shape poses that parry2d's composite helpers compose in f32.
+    let ground64 = parry2d_f64::shape::HeightField::new(vec![0.0; 11], parry2d_f64::math::Vector::new(10.0, 1.0));
+    let mut m64: Vec<parry2d_f64::query::ContactManifold<(), ()>> = Vec::new();
+    smooth_ccd2d::SmoothDispatcher::default()
+        .contact_manifolds(&pose64(&pos), &ground64, e.as_f64(), 0.05, &mut m64, &mut None)
+        .expect("manifolds");
+    let a: Vec<_> = manifolds
+        .iter()
+        .flat_map(|m| m.points.iter().map(|p| (m.subshape1, p.dist)))
+        .collect();
+    let b: Vec<_> = m64
+        .iter()
+        .flat_map(|m| m.points.iter().map(|p| (m.subshape1, p.dist)))
+        .collect();
+    assert_eq!(a.len(), b.len());
+    for ((s1, d1), (s2, d2)) in a.into_iter().zip(b) {
+        assert_eq!(s1, s2);
+        assert!((d1 as f64 - d2).abs() <= 1e-6, "{d1} / {d2}");
+    }
+}
+
+/// rapier's per-contact data survives a recomputation where the contact keeps its ids, as in
+/// parry's own manifolds.
+#[test]
+fn contact_data_is_kept_by_feature_id() {
+    let d = SmoothDispatcher::default();
+    let h = RoundedPolygon::regular(4, 0.5, 0.05);
+    let ground = Cuboid::new(Vector::new(5.0, 0.5));
+    let mut manifolds: Vec<ContactManifold<(), u32>> = Vec::new();
+    // A rounded square (core half-side 0.5/√2, turned by π/4 to sit on a face) resting on the
+    // box top, 1e-3 into it: two points, one per end of the facing faces.
+    let quarter = std::f32::consts::FRAC_PI_4;
+    let pos = Pose::new(Vector::new(0.0, 0.5 + 0.5f32.sqrt() * 0.5 + 0.05 - 1e-3), quarter);
+    d.contact_manifolds(&pos, &ground, &h, 0.05, &mut manifolds, &mut None)
+        .expect("manifolds");
+    assert_eq!(manifolds.len(), 1);
+    assert_eq!(manifolds[0].points.len(), 2);
+    for (k, p) in manifolds[0].points.iter_mut().enumerate() {
+        p.data = 7 + k as u32;
+    }
+    let before: Vec<_> = manifolds[0].points.iter().map(|p| (p.fid1, p.fid2, p.data)).collect();
+    assert_ne!((before[0].0, before[0].1), (before[1].0, before[1].1), "distinct ids");
+    let moved = Pose::new(pos.translation + Vector::new(1e-4, -1e-4), quarter);
+    d.contact_manifolds(&moved, &ground, &h, 0.05, &mut manifolds, &mut None)
+        .expect("manifolds");
+    let after: Vec<_> = manifolds[0].points.iter().map(|p| (p.fid1, p.fid2, p.data)).collect();
+    assert_eq!(before, after);
+}
+
+/// Non-finite poses and motions are refused (`Unsupported`), never answered with a NaN.
+#[test]
+fn bad_input_is_an_error_not_a_nan() {
+    let d = SmoothDispatcher::default();
+    let (e, b) = (Ellipse::new(0.5, 0.2), Ball::new(0.3));
+    let bad = Pose::translation(f32::NAN, 0.0);
+    assert!(d.distance(&bad, &e, &b).is_err());
+    assert!(d.contact(&bad, &e, &b, 0.1).is_err());
+    assert!(d.contact(&Pose::IDENTITY, &e, &b, -1.0).is_err());
+    let m = parry2d::query::NonlinearRigidMotion::new(
+        Pose::translation(-3.0, 0.0),
+        Vector::ZERO,
+        Vector::new(f32::INFINITY, 0.0),
+        0.0,
+    );
+    let r = d.cast_shapes_nonlinear(
+        &m,
+        &e,
+        &parry2d::query::NonlinearRigidMotion::identity(),
+        &b,
+        0.0,
+        1.0,
+        true,
+    );
+    assert!(r.is_err());
+    let mut manifolds: Vec<ContactManifold<(), ()>> = Vec::new();
+    let r = d.contact_manifolds(&bad, &e, &b, 0.1, &mut manifolds, &mut None);
+    assert!(r.is_err() || manifolds.iter().all(|m| m.points.iter().all(|p| p.dist.is_finite())));
+}
+
+/// The f32 dispatcher's manifold is the f64 one rounded (points, distances and ids).
+#[test]
+fn manifolds_are_the_f64_manifolds_rounded() {
+    let (d32, d64) = (SmoothDispatcher::default(), smooth_ccd2d::SmoothDispatcher::default());
+    let mut n = 0;
+    for (g1, w1, g2, w2) in pairs() {
+        for pos in poses() {
+            let mut m32: Vec<ContactManifold<(), ()>> = Vec::new();
+            let mut m64: Vec<parry2d_f64::query::ContactManifold<(), ()>> = Vec::new();
+            d32.contact_manifolds(&pos, &*g1, &*g2, 1.0, &mut m32, &mut None)
+                .expect("manifolds");
+            d64.contact_manifolds(&pose64(&pos), &*w1, &*w2, 1.0, &mut m64, &mut None)
+                .expect("manifolds");
+            let a: Vec<_> = m32
+                .iter()
+                .flat_map(|m| m.points.iter().map(|p| (p.dist, p.fid1.0, p.fid2.0)))
+                .collect();
+            let b: Vec<_> = m64
+                .iter()
+                .flat_map(|m| m.points.iter().map(|p| (p.dist as f32, p.fid1.0, p.fid2.0)))
+                .collect();
+            assert_eq!(a, b);
+            n += a.len();
+        }
+    }
+    println!("manifolds: {n} points equal to the f64 ones rounded");
+}
