@@ -73,11 +73,16 @@ pub(crate) fn up(x: f64) -> f32 {
 }
 
 /// A time of impact `t` (f64) reported in the f32 window starting at `start`: rounded down, so
-/// that the f32 hit is never later than the f64 one, but never down to `start` itself when `t`
-/// is after it (rapier discards hits at exactly the start of the window, and the dispatcher's
-/// start-contact rule answers strictly after it), and never below `start`.
+/// that the f32 hit is never later than the f64 one — except that it is never rounded down onto
+/// `start` itself when `t` is after it (rapier discards hits at exactly the start of the window,
+/// and the dispatcher's start-contact rule answers strictly after it): a `t` less than one f32
+/// ulp after `start` is reported as the next f32 after `start`, at most one ulp late. Never
+/// below `start`; NaN stays NaN (and is refused by the caller's finiteness check).
 #[inline]
 pub(crate) fn time_down(t: f64, start: Real) -> Real {
+    if t.is_nan() {
+        return f32::NAN;
+    }
     let r = down(t).max(start);
     if r == start && t > start as f64 {
         start.next_up()
@@ -198,6 +203,7 @@ mod tests {
         assert_eq!(time_down(0.2, start), start);
         let t = 0.3f64;
         assert!((time_down(t, start) as f64) <= t && time_down(t, start) == down(t));
+        assert!(time_down(f64::NAN, start).is_nan());
     }
 
     #[test]

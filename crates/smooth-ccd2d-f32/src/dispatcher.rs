@@ -14,13 +14,16 @@
 //!    (this package's shapes then answer through their support maps and polygonal feature maps).
 //!
 //! An answer that rounds to a non-finite f32 (an f64 answer beyond f32's range) is
-//! `Err(Unsupported)`, never a NaN or an infinity.
+//! `Err(Unsupported)`, never a NaN or an infinity; so is bad input on route 1 (`guard`, the checks
+//! the f64 dispatcher makes before parry's composite helpers; route 2 is checked by the f64
+//! dispatcher itself).
 
 use crate::composite::{
     composite_cast, composite_cast_nonlinear, composite_closest_points, composite_contact, composite_distance,
     composite_intersection, is_composite_like,
 };
 use crate::convert::{cast_options64, closest32, contact32, hit32, motion64, pose64, v64};
+use crate::guard::{cast_ok, guarded, inputs_ok};
 use crate::widen::widen_pair;
 use parry2d::math::{Pose, Real, Vector};
 use parry2d::query::{
@@ -100,7 +103,9 @@ impl QueryDispatcher for SmoothDispatcher {
         g2: &dyn Shape,
     ) -> Result<ShapeIntersection, Unsupported> {
         if composite_pair(g1, g2) {
-            return composite_intersection(self, pos12, g1, g2);
+            return guarded(inputs_ok(pos12, g1, g2, 0.0), || {
+                composite_intersection(self, pos12, g1, g2)
+            });
         }
         match widen_pair(g1, g2) {
             Some((a, b)) => {
@@ -116,7 +121,9 @@ impl QueryDispatcher for SmoothDispatcher {
 
     fn distance(&self, pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape) -> Result<ShapeDistance, Unsupported> {
         if composite_pair(g1, g2) {
-            return composite_distance(self, pos12, g1, g2);
+            return guarded(inputs_ok(pos12, g1, g2, 0.0), || {
+                composite_distance(self, pos12, g1, g2)
+            });
         }
         match widen_pair(g1, g2) {
             Some((a, b)) => {
@@ -139,7 +146,9 @@ impl QueryDispatcher for SmoothDispatcher {
         prediction: Real,
     ) -> Result<Option<Contact>, Unsupported> {
         if composite_pair(g1, g2) {
-            return composite_contact(self, pos12, g1, g2, prediction);
+            return guarded(inputs_ok(pos12, g1, g2, prediction), || {
+                composite_contact(self, pos12, g1, g2, prediction)
+            });
         }
         match widen_pair(g1, g2) {
             Some((a, b)) => match self
@@ -162,7 +171,9 @@ impl QueryDispatcher for SmoothDispatcher {
         max_dist: Real,
     ) -> Result<ClosestPoints, Unsupported> {
         if composite_pair(g1, g2) {
-            return composite_closest_points(self, pos12, g1, g2, max_dist);
+            return guarded(inputs_ok(pos12, g1, g2, max_dist), || {
+                composite_closest_points(self, pos12, g1, g2, max_dist)
+            });
         }
         match widen_pair(g1, g2) {
             Some((a, b)) => {
@@ -185,7 +196,12 @@ impl QueryDispatcher for SmoothDispatcher {
         options: ShapeCastOptions,
     ) -> Result<Option<ShapeCastHit>, Unsupported> {
         if composite_pair(g1, g2) {
-            return composite_cast(self, pos12, local_vel12, g1, g2, options);
+            let ok = inputs_ok(pos12, g1, g2, 0.0)
+                && local_vel12.is_finite()
+                && !options.max_time_of_impact.is_nan()
+                && options.target_distance.is_finite()
+                && options.target_distance >= 0.0;
+            return guarded(ok, || composite_cast(self, pos12, local_vel12, g1, g2, options));
         }
         match widen_pair(g1, g2) {
             Some((a, b)) => {
@@ -220,7 +236,9 @@ impl QueryDispatcher for SmoothDispatcher {
     ) -> Result<Option<ShapeCastHit>, Unsupported> {
         let (m1, m2, t0, t1, stop) = (motion1, motion2, start_time, end_time, stop_at_penetration);
         if composite_pair(g1, g2) {
-            return composite_cast_nonlinear(self, m1, g1, m2, g2, t0, t1, stop);
+            return guarded(cast_ok(m1, g1, m2, g2, t0, t1), || {
+                composite_cast_nonlinear(self, m1, g1, m2, g2, t0, t1, stop)
+            });
         }
         match widen_pair(g1, g2) {
             Some((a, b)) => {

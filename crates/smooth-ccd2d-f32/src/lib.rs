@@ -24,14 +24,15 @@
 //! (an f32 unit complex number is unit only to 10⁻⁷) — and the f64 answer is rounded once to
 //! f32. So, in f32:
 //!
-//! * **the time of impact** is the f64 time of impact of the f32 inputs, rounded *down* to f32
-//!   (never later than the exact one; never onto the start of the window when the exact time is
-//!   after it, since rapier discards such hits). A reported hit is therefore never inside
-//!   penetration by more than what the f32 rounding of the poses rapier then builds from it adds;
+//! * **the time of impact** is the f64 time of impact of the f32 inputs, rounded *down* to f32,
+//!   so never later than the exact one — with one exception: an exact time less than one f32 ulp
+//!   after the start of the window is reported one ulp after the start rather than at it (rapier
+//!   discards hits at exactly the start). A reported hit is therefore never inside penetration
+//!   by more than what the f32 rounding of the poses rapier then builds from it adds;
 //! * **distances, witnesses, normals and contact points** are the f64 answers of the f32 inputs,
 //!   rounded to nearest (relative error ≤ 2⁻²⁴ of each value);
-//! * **bounding boxes and spheres** round outward (they contain the shape), **CCD thicknesses**
-//!   round down;
+//! * **local bounding boxes and spheres** round outward (they contain the shape; a posed box is
+//!   parry2d's f32 transform of the local one), **CCD thicknesses** round down;
 //! * an answer that does not fit in f32 is `Err(Unsupported)`, never an infinity or a NaN.
 //!
 //! Pairs with none of this package's shapes are parry2d's own, in f32, untouched. A shape's f64
@@ -42,7 +43,8 @@
 //!
 //! The package holds only the boundary; everything else is `smooth-ccd2d`:
 //! `convert` (widening and rounding), `shapes` (the f32 shapes, by delegation), `widen` (parry's
-//! f32 shapes in f64), `dispatcher` and `manifold` (parry's dispatcher traits), `composite`
+//! f32 shapes in f64), `dispatcher` and `manifold` (parry's dispatcher traits), `guard` (bad input
+//! refused before parry's composite helpers), `composite`
 //! (`smooth-ccd2d`'s composite routing instantiated for parry2d), `cast`
 //! ([`shape_time_of_impact`]).
 
@@ -52,6 +54,7 @@ mod cast;
 mod composite;
 mod convert;
 mod dispatcher;
+mod guard;
 mod manifold;
 mod shapes;
 mod widen;

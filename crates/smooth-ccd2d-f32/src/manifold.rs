@@ -9,25 +9,28 @@
 //! and its normals, points, distances and feature ids round back into rapier's manifold, whose
 //! per-contact data (rapier's impulses) is carried over by feature id, as parry does.
 //!
-//! Normal constraints (the pseudo-normals of a trimesh's or heightfield's triangles) are
-//! parry2d (f32) objects: they are applied to the rounded manifold — the contact normal is
-//! projected, the contact dropped when the constraint rejects it, and each point's distance
-//! re-measured along a moved normal.
+//! Normal constraints (the pseudo-normals of a heightfield's segments, an oriented polyline's, a
+//! compound's with internal edges fixed) are parry2d (f32) objects; each is handed to the f64
+//! crate as an f64 constraint that rounds the normal, projects it with the f32 constraint and
+//! widens it back (`Widened`), so a constrained pair takes exactly the f64 crate's constrained
+//! route.
 
 use crate::composite::{composite_manifolds, single_manifold};
 use crate::convert::{packed32, pose64, v32, v64};
 use crate::dispatcher::composite_pair;
+use crate::guard::inputs_ok;
 use crate::shapes::own_f64;
 use crate::widen::widen_pair;
 use crate::SmoothDispatcher;
-use parry2d::math::{Pose, Real, Vector};
-use parry2d::query::details::{NormalConstraints, NormalConstraintsPair};
+use parry2d::math::{Pose, Real};
+use parry2d::query::details::NormalConstraints;
 use parry2d::query::{
     ContactManifold, ContactManifoldsWorkspace, DefaultQueryDispatcher, PersistentQueryDispatcher, TrackedContact,
     Unsupported,
 };
 use parry2d::shape::Shape;
 use parry2d_f64::query as q64;
+use parry2d_f64::query::details::NormalConstraints as NormalConstraints64;
 use parry2d_f64::query::PersistentQueryDispatcher as _;
 use parry2d_f64::shape as s64;
 
@@ -77,30 +80,45 @@ fn round_into<M, C: Default + Copy>(w: &q64::ContactManifold<(), ()>, m: &mut Co
     true
 }
 
-/// Applies normal constraints to a rounded manifold (see the module docs).
-fn constrain<M, C: Default + Copy>(
-    pos12: &Pose,
-    constraints: (Option<&dyn NormalConstraints>, Option<&dyn NormalConstraints>),
-    prediction: Real,
-    m: &mut ContactManifold<M, C>,
-) {
-    if m.points.is_empty() {
-        return;
-    }
-    let (mut n1, mut n2) = (m.local_n1, m.local_n2);
-    if !constraints.project_local_normals(pos12, &mut n1, &mut n2) {
-        m.clear();
-        m.local_n1 = Vector::ZERO;
-        return;
-    }
-    if n1 != m.local_n1 {
-        for p in &mut m.points {
-            p.dist = (pos12.transform_point(p.local_p2) - p.local_p1).dot(n1);
+/// An f32 normal constraint as an f64 one: the normal rounded, projected by the f32 constraint,
+/// widened and renormalised in f64.
+struct Widened(&'static dyn NormalConstraints);
+
+impl NormalConstraints64 for Widened {
+    fn project_local_normal_mut(&self, normal: &mut parry2d_f64::math::Vector) -> bool {
+        let mut n = v32(*normal);
+        if !self.0.project_local_normal_mut(&mut n) {
+            return false;
         }
-        m.points.retain(|p| p.dist <= prediction && p.dist.is_finite());
+        let w = v64(n);
+        let len = w.length();
+        if !(len > 0.0 && len.is_finite()) {
+            return false;
+        }
+        *normal = w / len;
+        true
     }
-    m.local_n1 = n1;
-    m.local_n2 = n2;
+}
+
+/// `c` as an f64 constraint for the duration of `f`.
+fn widened_constraint<R>(
+    c: Option<&dyn NormalConstraints>,
+    f: impl FnOnce(Option<&dyn NormalConstraints64>) -> R,
+) -> R {
+    match c {
+        None => f(None),
+        Some(c) => {
+            // SAFETY: parry's `NormalConstraints` trait requires `'static` implementors, which a
+            // wrapper of a borrowed f32 constraint is not; the borrow is extended to `'static`
+            // only inside `Widened`, which lives on this stack frame and is lent to `f` for the
+            // call (`f` receives a reference bounded by this frame, and cannot reach the inner
+            // reference except through `Widened`'s method, since `Widened` is private and parry's
+            // trait has no way to downcast or clone). The reference never outlives `c`'s borrow.
+            let c: &'static dyn NormalConstraints = unsafe { core::mem::transmute::<&dyn NormalConstraints, _>(c) };
+            let w = Widened(c);
+            f(Some(&w))
+        }
+    }
 }
 
 impl<M, C> PersistentQueryDispatcher<M, C> for SmoothDispatcher
@@ -122,6 +140,10 @@ where
             return Err(Unsupported);
         }
         if composite_pair(g1, g2) {
+            if !inputs_ok(pos12, g1, g2, prediction) {
+                manifolds.iter_mut().for_each(|m| m.clear());
+                return Err(Unsupported);
+            }
             composite_manifolds(self, pos12, g1, g2, prediction, manifolds, workspace);
             return Ok(());
         }
@@ -154,24 +176,25 @@ where
             );
         };
         let mut wide = widened(manifold);
-        let answered = self.core.contact_manifold_convex_convex(
-            &pose64(pos12),
-            a.get(),
-            b.get(),
-            None,
-            None,
-            prediction as f64,
-            &mut wide,
-        );
+        let answered = widened_constraint(normal_constraints1, |nc1| {
+            widened_constraint(normal_constraints2, |nc2| {
+                self.core.contact_manifold_convex_convex(
+                    &pose64(pos12),
+                    a.get(),
+                    b.get(),
+                    nc1,
+                    nc2,
+                    prediction as f64,
+                    &mut wide,
+                )
+            })
+        });
         if answered.is_err() {
             manifold.clear();
             return Err(Unsupported);
         }
         if !round_into(&wide, manifold) {
             return Err(Unsupported);
-        }
-        if normal_constraints1.is_some() || normal_constraints2.is_some() {
-            constrain(pos12, (normal_constraints1, normal_constraints2), prediction, manifold);
         }
         Ok(())
     }

@@ -2,7 +2,9 @@
 //! from the widened f32 parameters, and implements parry2d's `Shape`, `SupportMap`,
 //! `PolygonalFeatureMap`, `RayCast` and `PointQuery` by widening the query, asking the f64
 //! shape, and rounding the answer once (see [`crate::convert`](crate) for the rounding rules:
-//! boxes and spheres outward, thicknesses down, everything else to nearest).
+//! local boxes and spheres outward, thicknesses down, everything else to nearest). parry2d's
+//! default methods built on these (posed boxes, distances to a point, projections with a
+//! maximal distance) then run in f32 on the rounded answers, as for parry2d's own shapes.
 //!
 //! The f64 shape is always at hand ([`Ellipse::as_f64`] and the same on every wrapper) for the
 //! f64 API of `smooth-ccd2d` (curves, [`smooth_ccd2d::time_of_impact`], …).
@@ -163,12 +165,13 @@ impl Ellipse {
         smooth_ccd2d::Ellipse::try_new(half_x as f64, half_y as f64).map(Self)
     }
 
-    /// The semi-axis along x (exactly the f32 it was built with).
+    /// The semi-axis along x (exactly the f32 it was built with; after `scale_dyn`, the scaled f64
+    /// semi-axis rounded).
     pub fn half_x(&self) -> f32 {
         self.0.half_x() as f32
     }
 
-    /// The semi-axis along y (exactly the f32 it was built with).
+    /// The semi-axis along y (as [`Ellipse::half_x`]).
     pub fn half_y(&self) -> f32 {
         self.0.half_y() as f32
     }

@@ -249,7 +249,118 @@ fn bad_input_is_an_error_not_a_nan() {
     assert!(r.is_err());
     let mut manifolds: Vec<ContactManifold<(), ()>> = Vec::new();
     let r = d.contact_manifolds(&bad, &e, &b, 0.1, &mut manifolds, &mut None);
-    assert!(r.is_err() || manifolds.iter().all(|m| m.points.iter().all(|p| p.dist.is_finite())));
+    assert!(r.is_err() && manifolds.iter().all(|m| m.points.is_empty()));
+}
+
+/// Bad input on a composite pair is refused as in f64, before parry2d's composite helpers
+/// (which assert on a negative margin and pass NaN through).
+#[test]
+fn bad_input_on_composites_is_an_error_not_a_panic() {
+    let d = SmoothDispatcher::default();
+    let compound = Compound::new(vec![
+        (Pose::translation(-1.0, 0.0), SharedShape::new(Ellipse::new(0.5, 0.2))),
+        (Pose::translation(1.0, 0.0), SharedShape::ball(0.2)),
+    ]);
+    let b = Ball::new(0.3);
+    let (ok, bad) = (Pose::translation(0.0, 3.0), Pose::translation(f32::NAN, 0.0));
+    assert!(d.contact(&ok, &compound, &b, -1.0).is_err());
+    assert!(d.contact(&ok, &compound, &b, f32::NAN).is_err());
+    assert!(d.closest_points(&ok, &compound, &b, -1.0).is_err());
+    assert!(d.distance(&bad, &compound, &b).is_err());
+    assert!(d
+        .distance(&Pose::translation(f32::INFINITY, 0.0), &b, &compound)
+        .is_err());
+    assert!(d.intersection_test(&bad, &compound, &b).is_err());
+    assert!(d.contact(&bad, &compound, &b, 0.1).is_err());
+    let m = parry2d::query::NonlinearRigidMotion::new(ok, Vector::ZERO, Vector::new(0.0, f32::NAN), 0.0);
+    let still = parry2d::query::NonlinearRigidMotion::identity();
+    assert!(d
+        .cast_shapes_nonlinear(&still, &compound, &m, &b, 0.0, 1.0, true)
+        .is_err());
+    let m = parry2d::query::NonlinearRigidMotion::new(ok, Vector::ZERO, Vector::new(0.0, -1.0), 0.0);
+    assert!(d
+        .cast_shapes_nonlinear(&still, &compound, &m, &b, 0.0, f32::INFINITY, true)
+        .is_err());
+    assert!(d
+        .cast_shapes_nonlinear(&still, &compound, &m, &b, 1.0, 0.0, true)
+        .is_err());
+    let mut manifolds: Vec<ContactManifold<(), ()>> = Vec::new();
+    assert!(d
+        .contact_manifolds(&bad, &compound, &b, 0.1, &mut manifolds, &mut None)
+        .is_err());
+    assert!(d
+        .contact_manifolds(&ok, &compound, &b, -0.1, &mut manifolds, &mut None)
+        .is_err());
+    // Good input still answers, as the f64 dispatcher on the same compound.
+    let compound64 = parry2d_f64::shape::Compound::new(vec![
+        (
+            parry2d_f64::math::Pose::translation(-1.0, 0.0),
+            parry2d_f64::shape::SharedShape::new(smooth_ccd2d::Ellipse::new(0.5, 0.2)),
+        ),
+        (
+            parry2d_f64::math::Pose::translation(1.0, 0.0),
+            parry2d_f64::shape::SharedShape::ball(0.2),
+        ),
+    ]);
+    let c = d.distance(&ok, &compound, &b).expect("distance").distance;
+    let c64 = smooth_ccd2d::SmoothDispatcher::default()
+        .distance(&pose64(&ok), &compound64, &parry2d_f64::shape::Ball::new(0.3))
+        .expect("distance")
+        .distance;
+    assert!((c as f64 - c64).abs() < 1e-6, "{c} / {c64}");
+}
+
+/// A constrained pair (a compound with internal edges fixed gives its parts pseudo-normals)
+/// takes the f64 crate's constrained route: the same manifold as the f64 dispatcher's on the same
+/// compound, ids included.
+#[test]
+fn constrained_pairs_take_the_f64_constrained_route() {
+    use parry2d::shape::CompoundFlags;
+    let box_at = |x: f32| (Pose::translation(x, 0.0), SharedShape::cuboid(0.5, 0.5));
+    let ground = Compound::with_flags(vec![box_at(0.0), box_at(1.0)], CompoundFlags::FIX_INTERNAL_EDGES, None);
+    let box64 = |x: f64| {
+        (
+            parry2d_f64::math::Pose::translation(x, 0.0),
+            parry2d_f64::shape::SharedShape::cuboid(0.5, 0.5),
+        )
+    };
+    let ground64 = parry2d_f64::shape::Compound::with_flags(
+        vec![box64(0.0), box64(1.0)],
+        parry2d_f64::shape::CompoundFlags::FIX_INTERNAL_EDGES,
+        None,
+    );
+    let square = RoundedPolygon::regular(4, 0.4, 0.05);
+    let (d32, d64) = (SmoothDispatcher::default(), smooth_ccd2d::SmoothDispatcher::default());
+    let mut compared = 0;
+    for k in 0..16 {
+        // A rounded square on the compound's top (y = 0.5), across the internal edge at x = 0.5.
+        let pos = Pose::new(
+            Vector::new(0.1 + 0.05 * k as f32, 0.5 + 0.4 * 0.5f32.sqrt() + 0.05 - 2e-3),
+            0.785 + 0.02 * k as f32,
+        );
+        let mut m32: Vec<ContactManifold<(), ()>> = Vec::new();
+        let mut m64: Vec<parry2d_f64::query::ContactManifold<(), ()>> = Vec::new();
+        d32.contact_manifolds(&pos, &ground, &square, 0.05, &mut m32, &mut None)
+            .expect("manifolds");
+        d64.contact_manifolds(&pose64(&pos), &ground64, square.as_f64(), 0.05, &mut m64, &mut None)
+            .expect("manifolds");
+        let a: Vec<_> = m32
+            .iter()
+            .flat_map(|m| m.points.iter().map(move |p| (m.subshape1, p.fid1.0, p.fid2.0, p.dist)))
+            .collect();
+        let b: Vec<_> = m64
+            .iter()
+            .flat_map(|m| m.points.iter().map(move |p| (m.subshape1, p.fid1.0, p.fid2.0, p.dist)))
+            .collect();
+        assert_eq!(a.len(), b.len(), "pose {k}: {a:?} / {b:?}");
+        for (x, y) in a.iter().zip(&b) {
+            assert_eq!((x.0, x.1, x.2), (y.0, y.1, y.2), "pose {k}");
+            assert!((x.3 as f64 - y.3).abs() <= 1e-6, "pose {k}: {} / {}", x.3, y.3);
+            compared += 1;
+        }
+    }
+    assert!(compared > 16, "{compared}");
+    println!("constrained pairs: {compared} points with the f64 ids");
 }
 
 /// The f32 dispatcher's manifold is the f64 one rounded (points, distances and ids).

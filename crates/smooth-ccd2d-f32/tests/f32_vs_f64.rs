@@ -27,18 +27,28 @@ use smooth_ccd2d_f32::{Ellipse, RoundedPolygon, SmoothDispatcher};
 
 /// The f32 dispatcher's cast (`stop_at_penetration`, the scenario's target distance).
 fn cast32(r: &Rounded, s: &Scenario) -> Option<f32> {
+    cast32_with(r, s, true)
+}
+
+/// The f32 dispatcher's cast, with `stop_at_penetration` = `stop` (false: rapier's rule).
+fn cast32_with(r: &Rounded, s: &Scenario, stop: bool) -> Option<f32> {
     let d = SmoothDispatcher::default().with_toi_options(ToiOptions::default().with_target_distance(r.target as f64));
-    d.cast_shapes_nonlinear(&r.m1, &*r.g1, &r.m2, &*r.g2, s.t0 as f32, s.t1 as f32, true)
+    d.cast_shapes_nonlinear(&r.m1, &*r.g1, &r.m2, &*r.g2, s.t0 as f32, s.t1 as f32, stop)
         .expect("the f32 dispatcher answers")
         .map(|h| h.time_of_impact)
 }
 
 /// The f64 dispatcher's cast of a scenario.
 fn cast64(s: &Scenario) -> Option<f64> {
+    cast64_with(s, true)
+}
+
+/// The f64 dispatcher's cast of a scenario, with `stop_at_penetration` = `stop`.
+fn cast64_with(s: &Scenario, stop: bool) -> Option<f64> {
     let d = smooth_ccd2d::SmoothDispatcher::default()
         .with_toi_options(ToiOptions::default().with_target_distance(s.target));
     let (g1, g2) = (s.shape1.parry_shape(), s.shape2.parry_shape());
-    d.cast_shapes_nonlinear(&s.motion1, &*g1, &s.motion2, &*g2, s.t0, s.t1, true)
+    d.cast_shapes_nonlinear(&s.motion1, &*g1, &s.motion2, &*g2, s.t0, s.t1, stop)
         .expect("the f64 dispatcher answers")
         .map(|h| h.time_of_impact)
 }
@@ -76,7 +86,7 @@ fn f32_and_f64_times_of_impact_agree_to_the_rounding_of_the_inputs() {
     let per_class = cases_per_class(10_000);
     let (mut total, mut refused, mut both_hit, mut disagree) = (0, 0, 0, 0);
     let (mut worst_dt, mut worst_ulps, mut worst_gap) = (0.0f64, 0.0f64, 0.0f64);
-    let (mut conditioned, mut worst_dt_conditioned) = (0, 0.0f64);
+    let (mut conditioned, mut worst_dt_conditioned, mut rapier_hits) = (0, 0.0f64, 0);
     for class in classes() {
         for seed in 0..per_class as u64 {
             let s = generate(class, seed);
@@ -100,6 +110,26 @@ fn f32_and_f64_times_of_impact_agree_to_the_rounding_of_the_inputs() {
                 }
                 (None, None) => {}
                 _ => panic!("hit and miss differ on the same inputs: {}", ctx()),
+            }
+            // rapier's rule (`stop_at_penetration = false`), same inputs: the f64 answer rounded
+            // down, or one ulp after the start for an answer within one ulp of it.
+            let (rapier32, rapier64) = (cast32_with(&r, &s, false), cast64_with(&r.wide, false));
+            match (rapier32, rapier64) {
+                (Some(a), Some(b)) => {
+                    let start = s.t0 as f32;
+                    let bumped = a == start.next_up() && b > start as f64 && b < a as f64;
+                    assert!(
+                        bumped || (a as f64 <= b && b - a as f64 <= ulp(a)),
+                        "rapier rule: {a} / {b}: {}",
+                        ctx()
+                    );
+                    rapier_hits += 1;
+                }
+                (None, None) => {}
+                _ => panic!(
+                    "rapier rule: hit and miss differ on the same inputs ({rapier32:?} / {rapier64:?}): {}",
+                    ctx()
+                ),
             }
             let (size, delta) = (s.size(), rounding_scale(&s));
             let window = s.t1 - s.t0;
@@ -154,7 +184,8 @@ fn f32_and_f64_times_of_impact_agree_to_the_rounding_of_the_inputs() {
     }
     println!(
         "f32 vs f64: {total} cases ({refused} shapes refused after rounding), {both_hit} hits in both; \
-         same inputs: f32 = f64 rounded down (worst {worst_ulps:.2} ulp); original inputs: worst |Δt|/window \
+         same inputs: f32 = f64 rounded down (worst {worst_ulps:.2} ulp; with rapier's start-contact rule too, \
+         {rapier_hits} hits); original inputs: worst |Δt|/window \
          {worst_dt_conditioned:.3e} over the {conditioned} well-conditioned hits ({worst_dt:.3e} over all, where \
          grazes move the first contact), worst |gap at the f32 time| {worst_gap:.2} input roundings, \
          {disagree} hit/miss differences, each a near-contact within 8 input roundings"
