@@ -248,6 +248,44 @@ fn aabb_and_bounding_sphere_contain_dense_boundary_samples() {
     }
 }
 
+/// The posed boxes (`compute_aabb`) contain the posed boundary samples and, for the ellipse and
+/// the rounded polygon (tight boxes), are reached by them; the others' posed boxes are parry's
+/// transformed local box, which contains them.
+#[test]
+fn posed_boxes_contain_the_posed_boundary_and_are_tight_where_promised() {
+    for c in cases() {
+        for k in 0..12 {
+            let pose = Pose::new(Vector::new(0.3 * k as f64 - 1.0, 2.0 - 0.1 * k as f64), 0.55 * k as f64);
+            let aabb = c.shape.compute_aabb(&pose);
+            let tol = 1e-12 * (c.size + pose.translation.length());
+            let (mut lo, mut hi) = (Vector::splat(f64::INFINITY), Vector::splat(f64::NEG_INFINITY));
+            for p in &c.boundary {
+                let q = pose.transform_point(*p);
+                assert!(
+                    q.x >= aabb.mins.x - tol && q.y >= aabb.mins.y - tol,
+                    "{}: {q} below {aabb:?}",
+                    c.name
+                );
+                assert!(
+                    q.x <= aabb.maxs.x + tol && q.y <= aabb.maxs.y + tol,
+                    "{}: {q} above {aabb:?}",
+                    c.name
+                );
+                lo = lo.min(q);
+                hi = hi.max(q);
+            }
+            if c.name == "ellipse" || c.name == "rounded polygon" {
+                let gap = (lo - aabb.mins).abs().max((hi - aabb.maxs).abs()).max_element();
+                assert!(
+                    gap < 1e-4 * c.size,
+                    "{} pose {k}: samples {lo} {hi} vs {aabb:?}",
+                    c.name
+                );
+            }
+        }
+    }
+}
+
 fn assert_mass_close(name: &str, m: &MassProperties, r: &MassProperties, tol: f64, size: f64) {
     assert!(
         (m.mass() - r.mass()).abs() <= tol * r.mass(),

@@ -5,7 +5,7 @@ use super::projection::ellipse_closest_point;
 use crate::curve::ConvexCurve;
 use crate::custom_shape_common;
 use crate::numerics::math::unit_or_x;
-use crate::numerics::math::{Real, Vector};
+use crate::numerics::math::{Pose, Real, Vector};
 use crate::Ellipse;
 use core::f64::consts::{FRAC_PI_2, PI};
 use parry2d_f64::bounding_volume::{Aabb, BoundingSphere};
@@ -133,6 +133,17 @@ impl Shape for Ellipse {
 
     fn compute_local_bounding_sphere(&self) -> BoundingSphere {
         BoundingSphere::new(Vector::ZERO, self.bounding_radius())
+    }
+
+    /// The tight box of the posed ellipse: half-widths √(a²c² + b²s²) and √(a²s² + b²c²) for the
+    /// rotation (c, s) (parry's default transforms the local box, up to √2 wider per axis, which
+    /// gives rapier's broad phase pairs that cannot touch).
+    fn compute_aabb(&self, position: &Pose) -> Aabb {
+        let (a, b) = (self.half_x(), self.half_y());
+        let (c, s) = (position.rotation.re, position.rotation.im);
+        let h = Vector::new((a * c).hypot(b * s), (a * s).hypot(b * c));
+        let t = position.translation;
+        Aabb::new(t - h, t + h)
     }
 
     fn scale_dyn(&self, scale: Vector, _num_subdivisions: u32) -> Option<Box<dyn Shape>> {

@@ -8,7 +8,7 @@ use crate::curve::pieces::piece_index;
 use crate::curve::ConvexCurve;
 use crate::custom_shape_common;
 use crate::numerics::math::unit_or_x;
-use crate::numerics::math::{Real, Vector};
+use crate::numerics::math::{Pose, Real, Vector};
 use crate::RoundedPolygon;
 use core::f64::consts::FRAC_PI_4;
 use parry2d_f64::bounding_volume::{Aabb, BoundingSphere};
@@ -178,6 +178,21 @@ impl Shape for RoundedPolygon {
 
     fn compute_local_bounding_sphere(&self) -> BoundingSphere {
         BoundingSphere::new(Vector::ZERO, self.bounding_radius())
+    }
+
+    /// The tight box of the posed shape: the posed core vertices' box grown by the radius (as
+    /// parry's `RoundConvexPolygon`; the default transforms the local box, up to √2 wider).
+    fn compute_aabb(&self, position: &Pose) -> Aabb {
+        let v = self.vertices();
+        let first = position.transform_point(v[0]);
+        let (mut lo, mut hi) = (first, first);
+        for p in &v[1..] {
+            let q = position.transform_point(*p);
+            lo = lo.min(q);
+            hi = hi.max(q);
+        }
+        let r = Vector::splat(self.corner_radius());
+        Aabb::new(lo - r, hi + r)
     }
 
     fn scale_dyn(&self, scale: Vector, _num_subdivisions: u32) -> Option<Box<dyn Shape>> {

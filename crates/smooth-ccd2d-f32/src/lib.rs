@@ -31,8 +31,8 @@
 //!   by more than what the f32 rounding of the poses rapier then builds from it adds;
 //! * **distances, witnesses, normals and contact points** are the f64 answers of the f32 inputs,
 //!   rounded to nearest (relative error ≤ 2⁻²⁴ of each value);
-//! * **local bounding boxes and spheres** round outward (they contain the shape; a posed box is
-//!   parry2d's f32 transform of the local one), **CCD thicknesses** round down;
+//! * **bounding boxes** (local and posed) and **local bounding spheres** round outward (they
+//!   contain the shape), **CCD thicknesses** round down;
 //! * an answer that does not fit in f32 is `Err(Unsupported)`, never an infinity or a NaN.
 //!
 //! Pairs with none of this package's shapes are parry2d's own, in f32, untouched. A shape's f64

@@ -2,23 +2,31 @@
 //! from the widened f32 parameters, and implements parry2d's `Shape`, `SupportMap`,
 //! `PolygonalFeatureMap`, `RayCast` and `PointQuery` by widening the query, asking the f64
 //! shape, and rounding the answer once (see [`crate::convert`](crate) for the rounding rules:
-//! local boxes and spheres outward, thicknesses down, everything else to nearest). parry2d's
-//! default methods built on these (posed boxes, distances to a point, projections with a
-//! maximal distance) then run in f32 on the rounded answers, as for parry2d's own shapes.
+//! boxes (local and posed) and local spheres outward, thicknesses down, everything else to
+//! nearest). parry2d's default methods built on these (posed spheres, distances to a point,
+//! projections with a maximal distance) run in f32 on the rounded answers, as for its own shapes.
 //!
 //! The f64 shape is always at hand ([`Ellipse::as_f64`] and the same on every wrapper) for the
 //! f64 API of `smooth-ccd2d` (curves, [`smooth_ccd2d::time_of_impact`], …).
 
-use crate::convert::{down, feature32, packed32, up, v32, v64};
+use crate::convert::{down, feature32, packed32, pose64, up, v32, v64};
 use parry2d::bounding_volume::{Aabb, BoundingSphere};
 use parry2d::mass_properties::MassProperties;
-use parry2d::math::{Real, Vector};
+use parry2d::math::{Pose, Real, Vector};
 use parry2d::query::{PointProjection, PointQuery, Ray, RayCast, RayIntersection};
 use parry2d::shape::{FeatureId, PolygonalFeature, PolygonalFeatureMap, Shape, ShapeType, SupportMap, TypedShape};
 use parry2d_f64::query as q64;
 use parry2d_f64::shape as s64;
 use smooth_ccd2d::{ConvexCurve, ShapeError};
 use std::sync::Arc;
+
+/// An f64 box rounded outward to f32 (it still contains what the f64 box contains).
+fn outward(b: &parry2d_f64::bounding_volume::Aabb) -> Aabb {
+    Aabb::new(
+        Vector::new(down(b.mins.x), down(b.mins.y)),
+        Vector::new(up(b.maxs.x), up(b.maxs.y)),
+    )
+}
 
 /// parry2d's traits for an f32 wrapper `$ty` of the f64 shape `$inner`, by delegation.
 macro_rules! delegate_to_f64 {
@@ -95,11 +103,11 @@ macro_rules! delegate_to_f64 {
             smooth_ccd2d::custom_shape_common!();
 
             fn compute_local_aabb(&self) -> Aabb {
-                let b = s64::Shape::compute_local_aabb(&self.0);
-                Aabb::new(
-                    Vector::new(down(b.mins.x), down(b.mins.y)),
-                    Vector::new(up(b.maxs.x), up(b.maxs.y)),
-                )
+                outward(&s64::Shape::compute_local_aabb(&self.0))
+            }
+
+            fn compute_aabb(&self, position: &Pose) -> Aabb {
+                outward(&s64::Shape::compute_aabb(&self.0, &pose64(position)))
             }
 
             fn compute_local_bounding_sphere(&self) -> BoundingSphere {
@@ -312,7 +320,6 @@ pub(crate) fn own_f64(g: &dyn Shape) -> Option<&dyn s64::Shape> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use parry2d::math::Pose;
 
     fn shapes() -> Vec<(&'static str, Box<dyn Shape>)> {
         vec![
@@ -383,7 +390,12 @@ mod tests {
                 .0
                 .local_support_feature(dir, &mut f);
             assert_eq!(f.num_vertices, 2, "{name}");
-            let _ = s.compute_aabb(&Pose::new(Vector::new(1.0, 2.0), 0.3));
+            let pose = Pose::new(Vector::new(1.0, 2.0), 0.3);
+            let (b32, b64) = (s.compute_aabb(&pose), wide.compute_aabb(&pose64(&pose)));
+            assert!(
+                (b32.mins.x as f64) <= b64.mins.x && (b32.maxs.y as f64) >= b64.maxs.y,
+                "{name}"
+            );
         }
     }
 
