@@ -53,7 +53,7 @@ use super::composite::{composite_manifolds, is_composite_like, single_manifold};
 use super::input_guard;
 use super::parry_fallback::{pair_size, parry_within, pushed_together, TOUCH_PUSH};
 use super::route::{own_curve, route, RouteScratch};
-use super::support_shape::exact_contact;
+use super::support_shape::{exact_contact, exact_contact_of, support_shape, SupportScratch};
 use crate::curve::pieces::{flat_pieces, piece_index, piece_is_flat};
 use crate::curve::ConvexCurve;
 use crate::numerics::math::{Pose, Real, Vector};
@@ -88,6 +88,11 @@ fn far_apart(pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape, margin: Real) -> bool
     if g1.as_shape::<HalfSpace>().is_some() || g2.as_shape::<HalfSpace>().is_some() {
         return false;
     }
+    spheres_apart(pos12, g1, g2, margin)
+}
+
+/// True when the bounding circles of two bounded shapes are further apart than `margin`.
+fn spheres_apart(pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape, margin: Real) -> bool {
     let b1 = g1.compute_local_bounding_sphere();
     let b2 = g2.compute_bounding_sphere(pos12);
     (b2.center - b1.center).length() - b1.radius - b2.radius > margin
@@ -265,6 +270,37 @@ fn guarded<M, C: Default + Copy>(manifolds: &mut [ContactManifold<M, C>], ok: bo
     Err(Unsupported)
 }
 
+impl SmoothDispatcher {
+    /// The fast path of `contact_manifolds` for a convex pair with one of this crate's shapes:
+    /// when the contact query reads both shapes ([`support_shape`]: no half-space, no user's
+    /// curve), the same steps as `contact_manifold_convex_convex` without constraints — bounding
+    /// circles apart: no point; else the exact contact from the previous normal — with each shape
+    /// read once instead of three times. False (nothing changed) when the pair is not such a pair
+    /// or its contact failed: the general path answers, with the same result.
+    fn exact_manifold<M, C: Default + Copy>(
+        &self,
+        pos12: &Pose,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+        prediction: Real,
+        manifold: &mut ContactManifold<M, C>,
+    ) -> bool {
+        let (mut st1, mut st2) = (SupportScratch::default(), SupportScratch::default());
+        let (Some(s1), Some(s2)) = (support_shape(g1, &mut st1), support_shape(g2, &mut st2)) else {
+            return false;
+        };
+        if spheres_apart(pos12, g1, g2, prediction) {
+            manifold.clear();
+            return true;
+        }
+        let hint = Some(manifold.local_n1).filter(|n| self.warm_start && n.is_finite() && *n != Vector::ZERO);
+        match exact_contact_of(s1, s2, pos12, hint) {
+            Some(c) => manifold_from_contact(pos12, &c, prediction, manifold),
+            None => false,
+        }
+    }
+}
+
 impl<M, C> PersistentQueryDispatcher<M, C> for SmoothDispatcher
 where
     M: Default + Clone + Send + Sync,
@@ -297,6 +333,9 @@ where
             return guarded(manifolds, finite);
         }
         let manifold = single_manifold(manifolds);
+        if self.exact_manifold(pos12, g1, g2, prediction, manifold) {
+            return Ok(());
+        }
         self.contact_manifold_convex_convex(pos12, g1, g2, None, None, prediction, manifold)
     }
 

@@ -149,3 +149,16 @@ pub(crate) fn exact_contact(pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape, hint: 
     let s2 = support_shape(g2, &mut st2)?;
     contact(s1, s2, pos12, FLAT_FEATURE_MAX_ANGLE.cos(), hint)
 }
+
+/// [`exact_contact`] of two shapes already read by [`support_shape`].
+pub(crate) fn exact_contact_of(
+    s1: SupportShape,
+    s2: SupportShape,
+    pos12: &Pose,
+    hint: Option<Vector>,
+) -> Option<Contact> {
+    if !input_guard::pose_ok(pos12) {
+        return None;
+    }
+    contact(s1, s2, pos12, FLAT_FEATURE_MAX_ANGLE.cos(), hint)
+}
