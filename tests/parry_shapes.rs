@@ -7,6 +7,7 @@ mod common;
 
 use common::rng::Rng;
 use core::f64::consts::PI;
+use parry2d_f64::bounding_volume::Aabb;
 use parry2d_f64::mass_properties::MassProperties;
 use parry2d_f64::math::{Pose, Vector};
 use parry2d_f64::query::{self, ContactManifold, DefaultQueryDispatcher, PersistentQueryDispatcher, PointQuery, Ray};
@@ -208,49 +209,52 @@ fn cases() -> Vec<Case> {
     v
 }
 
+/// Asserts that every point is in `aabb` (to `tol`); returns the points' own box (lo, hi).
+fn box_of_points_in(points: impl Iterator<Item = Vector>, aabb: &Aabb, tol: f64, what: &str) -> (Vector, Vector) {
+    let (mut lo, mut hi) = (Vector::splat(f64::INFINITY), Vector::splat(f64::NEG_INFINITY));
+    for p in points {
+        assert!(
+            p.x >= aabb.mins.x - tol && p.y >= aabb.mins.y - tol,
+            "{what}: {p} below {aabb:?}"
+        );
+        assert!(
+            p.x <= aabb.maxs.x + tol && p.y <= aabb.maxs.y + tol,
+            "{what}: {p} above {aabb:?}"
+        );
+        lo = lo.min(p);
+        hi = hi.max(p);
+    }
+    (lo, hi)
+}
+
+/// Asserts that the points' box (lo, hi) reaches `aabb` to `tol`: the box is tight.
+fn assert_tight(lo: Vector, hi: Vector, aabb: &Aabb, tol: f64, what: &str) {
+    let gap = (lo - aabb.mins).abs().max((hi - aabb.maxs).abs()).max_element();
+    assert!(gap < tol, "{what}: samples {lo} {hi} vs {aabb:?}");
+}
+
 #[test]
 fn aabb_and_bounding_sphere_contain_dense_boundary_samples() {
     for c in cases() {
         let aabb = c.shape.compute_local_aabb();
         let bs = c.shape.compute_local_bounding_sphere();
         let tol = 1e-12 * c.size;
-        let (mut lo, mut hi) = (Vector::splat(f64::INFINITY), Vector::splat(f64::NEG_INFINITY));
         for p in &c.boundary {
-            assert!(
-                p.x >= aabb.mins.x - tol && p.y >= aabb.mins.y - tol,
-                "{}: {p} below {aabb:?}",
-                c.name
-            );
-            assert!(
-                p.x <= aabb.maxs.x + tol && p.y <= aabb.maxs.y + tol,
-                "{}: {p} above {aabb:?}",
-                c.name
-            );
             assert!(
                 (*p - bs.center).length() <= bs.radius + tol,
                 "{}: {p} outside sphere",
                 c.name
             );
-            lo = lo.min(*p);
-            hi = hi.max(*p);
         }
+        let (lo, hi) = box_of_points_in(c.boundary.iter().copied(), &aabb, tol, c.name);
         // Exact: the samples reach the box (up to the sampling resolution).
-        assert!(
-            (lo - aabb.mins).abs().max_element() < 1e-6 * c.size,
-            "{}: {lo} vs {aabb:?}",
-            c.name
-        );
-        assert!(
-            (hi - aabb.maxs).abs().max_element() < 1e-6 * c.size,
-            "{}: {hi} vs {aabb:?}",
-            c.name
-        );
+        assert_tight(lo, hi, &aabb, 1e-6 * c.size, c.name);
     }
 }
 
 /// The posed boxes (`compute_aabb`) contain the posed boundary samples and, for the ellipse and
-/// the rounded polygon (tight boxes), are reached by them; the others' posed boxes are parry's
-/// transformed local box, which contains them.
+/// the rounded polygon (tight boxes), are reached by them to the sampling resolution; the
+/// others' posed boxes are parry's transformed local box, which contains them.
 #[test]
 fn posed_boxes_contain_the_posed_boundary_and_are_tight_where_promised() {
     for c in cases() {
@@ -258,29 +262,10 @@ fn posed_boxes_contain_the_posed_boundary_and_are_tight_where_promised() {
             let pose = Pose::new(Vector::new(0.3 * k as f64 - 1.0, 2.0 - 0.1 * k as f64), 0.55 * k as f64);
             let aabb = c.shape.compute_aabb(&pose);
             let tol = 1e-12 * (c.size + pose.translation.length());
-            let (mut lo, mut hi) = (Vector::splat(f64::INFINITY), Vector::splat(f64::NEG_INFINITY));
-            for p in &c.boundary {
-                let q = pose.transform_point(*p);
-                assert!(
-                    q.x >= aabb.mins.x - tol && q.y >= aabb.mins.y - tol,
-                    "{}: {q} below {aabb:?}",
-                    c.name
-                );
-                assert!(
-                    q.x <= aabb.maxs.x + tol && q.y <= aabb.maxs.y + tol,
-                    "{}: {q} above {aabb:?}",
-                    c.name
-                );
-                lo = lo.min(q);
-                hi = hi.max(q);
-            }
+            let posed = c.boundary.iter().map(|p| pose.transform_point(*p));
+            let (lo, hi) = box_of_points_in(posed, &aabb, tol, c.name);
             if c.name == "ellipse" || c.name == "rounded polygon" {
-                let gap = (lo - aabb.mins).abs().max((hi - aabb.maxs).abs()).max_element();
-                assert!(
-                    gap < 1e-4 * c.size,
-                    "{} pose {k}: samples {lo} {hi} vs {aabb:?}",
-                    c.name
-                );
+                assert_tight(lo, hi, &aabb, 1e-6 * c.size, &format!("{} pose {k}", c.name));
             }
         }
     }

@@ -14,10 +14,7 @@
 
 use crate::numerics::math::{Pose, Real};
 use crate::numerics::motion::motion_is_finite;
-use parry2d_f64::query::{
-    ClosestPoints, Contact, ContactManifold, NonlinearRigidMotion, ShapeCastHit, ShapeDistance, ShapeIntersection,
-    Unsupported,
-};
+use parry2d_f64::query::{NonlinearRigidMotion, Unsupported};
 use parry2d_f64::shape::{Shape, ShapeType};
 
 /// The largest coordinate (of a pose's translation, of a shape's bounding box) handed to parry:
@@ -62,62 +59,74 @@ pub(crate) fn shapes_ok_typed(g1: &dyn Shape, t1: ShapeType, g2: &dyn Shape, t2:
 
 pub(crate) use crate::error::AllFinite;
 
-impl AllFinite for ShapeIntersection {
-    fn all_finite(&self) -> bool {
-        true
-    }
-}
-
-impl AllFinite for ShapeDistance {
-    fn all_finite(&self) -> bool {
-        self.distance.is_finite()
-    }
-}
-
-impl AllFinite for Contact {
-    fn all_finite(&self) -> bool {
-        self.dist.is_finite()
-            && self.point1.is_finite()
-            && self.point2.is_finite()
-            && self.normal1.is_finite()
-            && self.normal2.is_finite()
-    }
-}
-
-impl AllFinite for ClosestPoints {
-    fn all_finite(&self) -> bool {
-        match self {
-            ClosestPoints::WithinMargin(a, b) => a.is_finite() && b.is_finite(),
-            _ => true,
+/// Implements the trait `$finite` (one method, `fn all_finite(&self) -> bool`: every number in the
+/// answer is finite) for the answers of the `$parry` crate's queries: intersection, distance,
+/// contact, closest points, cast hit, contact manifold, and an `Option` of any of them. Written
+/// once for parry2d-f64 (here) and parry2d (the f32 package's guards); not a public API.
+#[doc(hidden)]
+#[macro_export]
+macro_rules! all_finite_impls {
+    ($parry:ident, $finite:path) => {
+        impl $finite for $parry::query::ShapeIntersection {
+            fn all_finite(&self) -> bool {
+                true
+            }
         }
-    }
+
+        impl $finite for $parry::query::ShapeDistance {
+            fn all_finite(&self) -> bool {
+                self.distance.is_finite()
+            }
+        }
+
+        impl $finite for $parry::query::Contact {
+            fn all_finite(&self) -> bool {
+                self.dist.is_finite()
+                    && self.point1.is_finite()
+                    && self.point2.is_finite()
+                    && self.normal1.is_finite()
+                    && self.normal2.is_finite()
+            }
+        }
+
+        impl $finite for $parry::query::ClosestPoints {
+            fn all_finite(&self) -> bool {
+                match self {
+                    $parry::query::ClosestPoints::WithinMargin(a, b) => a.is_finite() && b.is_finite(),
+                    _ => true,
+                }
+            }
+        }
+
+        impl $finite for $parry::query::ShapeCastHit {
+            fn all_finite(&self) -> bool {
+                self.time_of_impact.is_finite()
+                    && self.witness1.is_finite()
+                    && self.witness2.is_finite()
+                    && self.normal1.is_finite()
+                    && self.normal2.is_finite()
+            }
+        }
+
+        impl<M, C> $finite for $parry::query::ContactManifold<M, C> {
+            fn all_finite(&self) -> bool {
+                (self.points.is_empty() || (self.local_n1.is_finite() && self.local_n2.is_finite()))
+                    && self
+                        .points
+                        .iter()
+                        .all(|c| c.local_p1.is_finite() && c.local_p2.is_finite() && c.dist.is_finite())
+            }
+        }
+
+        impl<T: $finite> $finite for Option<T> {
+            fn all_finite(&self) -> bool {
+                self.as_ref().is_none_or(<T as $finite>::all_finite)
+            }
+        }
+    };
 }
 
-impl AllFinite for ShapeCastHit {
-    fn all_finite(&self) -> bool {
-        self.time_of_impact.is_finite()
-            && self.witness1.is_finite()
-            && self.witness2.is_finite()
-            && self.normal1.is_finite()
-            && self.normal2.is_finite()
-    }
-}
-
-impl<M, C> AllFinite for ContactManifold<M, C> {
-    fn all_finite(&self) -> bool {
-        (self.points.is_empty() || (self.local_n1.is_finite() && self.local_n2.is_finite()))
-            && self
-                .points
-                .iter()
-                .all(|c| c.local_p1.is_finite() && c.local_p2.is_finite() && c.dist.is_finite())
-    }
-}
-
-impl<T: AllFinite> AllFinite for Option<T> {
-    fn all_finite(&self) -> bool {
-        self.as_ref().is_none_or(T::all_finite)
-    }
-}
+all_finite_impls!(parry2d_f64, AllFinite);
 
 /// Runs parry's `query` on `(pos12, g1, g2)` with `margin` (0 when the query has none) under
 /// the guards of the module docs.

@@ -53,7 +53,7 @@ use super::composite::{composite_manifolds, is_composite_like, single_manifold};
 use super::input_guard;
 use super::parry_fallback::{pair_size, parry_within, pushed_together, TOUCH_PUSH};
 use super::route::{own_curve, route, RouteScratch};
-use super::support_shape::{exact_contact, exact_contact_of, support_shape, SupportScratch};
+use super::support_shape::{exact_contact_of, support_shape, SupportScratch};
 use crate::curve::pieces::{flat_pieces, piece_index, piece_is_flat};
 use crate::curve::ConvexCurve;
 use crate::numerics::math::{Pose, Real, Vector};
@@ -271,12 +271,11 @@ fn guarded<M, C: Default + Copy>(manifolds: &mut [ContactManifold<M, C>], ok: bo
 }
 
 impl SmoothDispatcher {
-    /// The fast path of `contact_manifolds` for a convex pair with one of this crate's shapes:
-    /// when the contact query reads both shapes ([`support_shape`]: no half-space, no user's
-    /// curve), the same steps as `contact_manifold_convex_convex` without constraints — bounding
-    /// circles apart: no point; else the exact contact from the previous normal — with each shape
-    /// read once instead of three times. False (nothing changed) when the pair is not such a pair
-    /// or its contact failed: the general path answers, with the same result.
+    /// The exact contact query's manifold of an unconstrained convex pair whose two shapes it
+    /// reads ([`support_shape`]: one of this crate's, no half-space, no user's curve), each shape
+    /// read once: bounding circles apart, no point; else the exact contact from the previous
+    /// normal. False (the manifold unchanged) when the pair is not such a pair or its contact
+    /// failed: the rest of `contact_manifold_convex_convex` answers it.
     fn exact_manifold<M, C: Default + Copy>(
         &self,
         pos12: &Pose,
@@ -285,6 +284,10 @@ impl SmoothDispatcher {
         prediction: Real,
         manifold: &mut ContactManifold<M, C>,
     ) -> bool {
+        // parry's own pairs (e.g. the parts of a compound) stay parry's.
+        if g1.shape_type() != ShapeType::Custom && g2.shape_type() != ShapeType::Custom {
+            return false;
+        }
         let (mut st1, mut st2) = (SupportScratch::default(), SupportScratch::default());
         let (Some(s1), Some(s2)) = (support_shape(g1, &mut st1), support_shape(g2, &mut st2)) else {
             return false;
@@ -333,9 +336,6 @@ where
             return guarded(manifolds, finite);
         }
         let manifold = single_manifold(manifolds);
-        if self.exact_manifold(pos12, g1, g2, prediction, manifold) {
-            return Ok(());
-        }
         self.contact_manifold_convex_convex(pos12, g1, g2, None, None, prediction, manifold)
     }
 
@@ -349,19 +349,14 @@ where
         prediction: Real,
         manifold: &mut ContactManifold<M, C>,
     ) -> Result<(), Unsupported> {
+        let unconstrained = normal_constraints1.is_none() && normal_constraints2.is_none();
+        if unconstrained && self.exact_manifold(pos12, g1, g2, prediction, manifold) {
+            return Ok(());
+        }
         let ours = own_curve(g1).is_some() || own_curve(g2).is_some();
         if ours && far_apart(pos12, g1, g2, prediction) {
             manifold.clear();
             return Ok(());
-        }
-        let unconstrained = normal_constraints1.is_none() && normal_constraints2.is_none();
-        if ours && unconstrained {
-            let hint = Some(manifold.local_n1).filter(|n| self.warm_start && n.is_finite() && *n != Vector::ZERO);
-            if let Some(c) = exact_contact(pos12, g1, g2, hint) {
-                if manifold_from_contact(pos12, &c, prediction, manifold) {
-                    return Ok(());
-                }
-            }
         }
         // Route once: parry shapes are converted to curves a single time per query.
         let mut scratch = RouteScratch::default();

@@ -11,6 +11,7 @@
 //! down (rapier's CCD thresholds stay conservative), and a time of impact rounds down (the
 //! reported hit is never later than the f64 one; see [`time_down`]).
 
+use crate::guard::AllFinite;
 use parry2d::math::{Pose, Real, Vector};
 use parry2d::query::{ClosestPoints, Contact, NonlinearRigidMotion, ShapeCastHit, ShapeCastOptions, ShapeCastStatus};
 use parry2d::shape::{FeatureId, PackedFeatureId};
@@ -142,12 +143,7 @@ pub(crate) fn hit32(h: &q64::ShapeCastHit, start: Real) -> Option<ShapeCastHit> 
         subshape1: h.subshape1,
         subshape2: h.subshape2,
     };
-    let finite = hit.time_of_impact.is_finite()
-        && hit.witness1.is_finite()
-        && hit.witness2.is_finite()
-        && hit.normal1.is_finite()
-        && hit.normal2.is_finite();
-    finite.then_some(hit)
+    hit.all_finite().then_some(hit)
 }
 
 /// A contact rounded to f32; `None` when a rounded value is not finite.
@@ -159,24 +155,17 @@ pub(crate) fn contact32(c: &q64::Contact) -> Option<Contact> {
         v32(c.normal2),
         c.dist as f32,
     );
-    let finite = c.point1.is_finite()
-        && c.point2.is_finite()
-        && c.normal1.is_finite()
-        && c.normal2.is_finite()
-        && c.dist.is_finite();
-    finite.then_some(c)
+    c.all_finite().then_some(c)
 }
 
 /// Closest points rounded to f32; `None` when a rounded point is not finite.
 pub(crate) fn closest32(c: &q64::ClosestPoints) -> Option<ClosestPoints> {
-    match c {
-        q64::ClosestPoints::Intersecting => Some(ClosestPoints::Intersecting),
-        q64::ClosestPoints::Disjoint => Some(ClosestPoints::Disjoint),
-        q64::ClosestPoints::WithinMargin(a, b) => {
-            let (a, b) = (v32(*a), v32(*b));
-            (a.is_finite() && b.is_finite()).then_some(ClosestPoints::WithinMargin(a, b))
-        }
-    }
+    let c = match c {
+        q64::ClosestPoints::Intersecting => ClosestPoints::Intersecting,
+        q64::ClosestPoints::Disjoint => ClosestPoints::Disjoint,
+        q64::ClosestPoints::WithinMargin(a, b) => ClosestPoints::WithinMargin(v32(*a), v32(*b)),
+    };
+    c.all_finite().then_some(c)
 }
 
 #[cfg(test)]

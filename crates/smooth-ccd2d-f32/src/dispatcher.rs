@@ -11,7 +11,8 @@
 //!    (the same routing, algorithms, options and start-contact rule as in f64), and the answer
 //!    rounded once to f32 (`convert`);
 //! 3. anything else: parry2d's `DefaultQueryDispatcher`, in f32, exactly as without this crate
-//!    (this package's shapes then answer through their support maps and polygonal feature maps).
+//!    (this package's shapes then answer through their support maps and polygonal feature maps,
+//!    under the same guards as route 1: e.g. one of them against a user's own parry shape).
 //!
 //! An answer that rounds to a non-finite f32 (an f64 answer beyond f32's range) is
 //! `Err(Unsupported)`, never a NaN or an infinity; so is bad input on route 1 (`guard`, the checks
@@ -23,8 +24,9 @@ use crate::composite::{
     composite_intersection, is_composite_like,
 };
 use crate::convert::{cast_options64, closest32, contact32, hit32, motion64, pose64, v64};
-use crate::guard::{cast_ok, guarded, inputs_ok};
-use crate::widen::widen_pair;
+use crate::guard::{cast_ok, guarded, inputs_ok, linear_cast_ok};
+use crate::shapes::own_f64;
+use crate::widen::{widen_pair, Wide};
 use parry2d::math::{Pose, Real, Vector};
 use parry2d::query::{
     ClosestPoints, Contact, DefaultQueryDispatcher, NonlinearRigidMotion, QueryDispatcher, ShapeCastHit,
@@ -95,6 +97,33 @@ pub(crate) fn composite_pair(g1: &dyn Shape, g2: &dyn Shape) -> bool {
     is_composite_like(g1, g1.shape_type()) || is_composite_like(g2, g2.shape_type())
 }
 
+/// How a pair is answered (the routes of the module docs).
+enum Way<'a> {
+    /// Route 1: parry2d's composite helpers with this dispatcher, under the guards.
+    Composite,
+    /// Route 2: the f64 crate on the widened pair.
+    Wide(Wide<'a>, Wide<'a>),
+    /// Route 3 with one of this package's shapes (against a shape the core does not take):
+    /// parry2d through the shape's support map, under the guards.
+    GuardedParry,
+    /// Route 3 without: parry2d, untouched.
+    Parry,
+}
+
+impl<'a> Way<'a> {
+    fn of(g1: &'a dyn Shape, g2: &'a dyn Shape) -> Self {
+        if composite_pair(g1, g2) {
+            Way::Composite
+        } else if let Some((a, b)) = widen_pair(g1, g2) {
+            Way::Wide(a, b)
+        } else if own_f64(g1).is_some() || own_f64(g2).is_some() {
+            Way::GuardedParry
+        } else {
+            Way::Parry
+        }
+    }
+}
+
 impl QueryDispatcher for SmoothDispatcher {
     fn intersection_test(
         &self,
@@ -102,31 +131,26 @@ impl QueryDispatcher for SmoothDispatcher {
         g1: &dyn Shape,
         g2: &dyn Shape,
     ) -> Result<ShapeIntersection, Unsupported> {
-        if composite_pair(g1, g2) {
-            return guarded(inputs_ok(pos12, g1, g2, 0.0), || {
-                composite_intersection(self, pos12, g1, g2)
-            });
-        }
-        match widen_pair(g1, g2) {
-            Some((a, b)) => {
+        let ok = || inputs_ok(pos12, g1, g2, 0.0);
+        match Way::of(g1, g2) {
+            Way::Composite => guarded(ok(), || composite_intersection(self, pos12, g1, g2)),
+            Way::Wide(a, b) => {
                 let i = self
                     .core
                     .intersection_test(&pose64(pos12), a.get(), b.get())
                     .map_err(unsupported)?;
                 Ok(ShapeIntersection::new(i.intersecting))
             }
-            None => DefaultQueryDispatcher.intersection_test(pos12, g1, g2),
+            Way::GuardedParry => guarded(ok(), || DefaultQueryDispatcher.intersection_test(pos12, g1, g2)),
+            Way::Parry => DefaultQueryDispatcher.intersection_test(pos12, g1, g2),
         }
     }
 
     fn distance(&self, pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape) -> Result<ShapeDistance, Unsupported> {
-        if composite_pair(g1, g2) {
-            return guarded(inputs_ok(pos12, g1, g2, 0.0), || {
-                composite_distance(self, pos12, g1, g2)
-            });
-        }
-        match widen_pair(g1, g2) {
-            Some((a, b)) => {
+        let ok = || inputs_ok(pos12, g1, g2, 0.0);
+        match Way::of(g1, g2) {
+            Way::Composite => guarded(ok(), || composite_distance(self, pos12, g1, g2)),
+            Way::Wide(a, b) => {
                 let d = self
                     .core
                     .distance(&pose64(pos12), a.get(), b.get())
@@ -134,7 +158,8 @@ impl QueryDispatcher for SmoothDispatcher {
                     .distance as f32;
                 d.is_finite().then(|| ShapeDistance::new(d)).ok_or(Unsupported)
             }
-            None => DefaultQueryDispatcher.distance(pos12, g1, g2),
+            Way::GuardedParry => guarded(ok(), || DefaultQueryDispatcher.distance(pos12, g1, g2)),
+            Way::Parry => DefaultQueryDispatcher.distance(pos12, g1, g2),
         }
     }
 
@@ -145,13 +170,10 @@ impl QueryDispatcher for SmoothDispatcher {
         g2: &dyn Shape,
         prediction: Real,
     ) -> Result<Option<Contact>, Unsupported> {
-        if composite_pair(g1, g2) {
-            return guarded(inputs_ok(pos12, g1, g2, prediction), || {
-                composite_contact(self, pos12, g1, g2, prediction)
-            });
-        }
-        match widen_pair(g1, g2) {
-            Some((a, b)) => match self
+        let ok = || inputs_ok(pos12, g1, g2, prediction);
+        match Way::of(g1, g2) {
+            Way::Composite => guarded(ok(), || composite_contact(self, pos12, g1, g2, prediction)),
+            Way::Wide(a, b) => match self
                 .core
                 .contact(&pose64(pos12), a.get(), b.get(), prediction as f64)
                 .map_err(unsupported)?
@@ -159,7 +181,8 @@ impl QueryDispatcher for SmoothDispatcher {
                 Some(c) => contact32(&c).map(Some).ok_or(Unsupported),
                 None => Ok(None),
             },
-            None => DefaultQueryDispatcher.contact(pos12, g1, g2, prediction),
+            Way::GuardedParry => guarded(ok(), || DefaultQueryDispatcher.contact(pos12, g1, g2, prediction)),
+            Way::Parry => DefaultQueryDispatcher.contact(pos12, g1, g2, prediction),
         }
     }
 
@@ -170,20 +193,18 @@ impl QueryDispatcher for SmoothDispatcher {
         g2: &dyn Shape,
         max_dist: Real,
     ) -> Result<ClosestPoints, Unsupported> {
-        if composite_pair(g1, g2) {
-            return guarded(inputs_ok(pos12, g1, g2, max_dist), || {
-                composite_closest_points(self, pos12, g1, g2, max_dist)
-            });
-        }
-        match widen_pair(g1, g2) {
-            Some((a, b)) => {
+        let ok = || inputs_ok(pos12, g1, g2, max_dist);
+        match Way::of(g1, g2) {
+            Way::Composite => guarded(ok(), || composite_closest_points(self, pos12, g1, g2, max_dist)),
+            Way::Wide(a, b) => {
                 let c = self
                     .core
                     .closest_points(&pose64(pos12), a.get(), b.get(), max_dist as f64)
                     .map_err(unsupported)?;
                 closest32(&c).ok_or(Unsupported)
             }
-            None => DefaultQueryDispatcher.closest_points(pos12, g1, g2, max_dist),
+            Way::GuardedParry => guarded(ok(), || DefaultQueryDispatcher.closest_points(pos12, g1, g2, max_dist)),
+            Way::Parry => DefaultQueryDispatcher.closest_points(pos12, g1, g2, max_dist),
         }
     }
 
@@ -195,16 +216,10 @@ impl QueryDispatcher for SmoothDispatcher {
         g2: &dyn Shape,
         options: ShapeCastOptions,
     ) -> Result<Option<ShapeCastHit>, Unsupported> {
-        if composite_pair(g1, g2) {
-            let ok = inputs_ok(pos12, g1, g2, 0.0)
-                && local_vel12.is_finite()
-                && !options.max_time_of_impact.is_nan()
-                && options.target_distance.is_finite()
-                && options.target_distance >= 0.0;
-            return guarded(ok, || composite_cast(self, pos12, local_vel12, g1, g2, options));
-        }
-        match widen_pair(g1, g2) {
-            Some((a, b)) => {
+        let ok = || linear_cast_ok(pos12, local_vel12, g1, g2, &options);
+        match Way::of(g1, g2) {
+            Way::Composite => guarded(ok(), || composite_cast(self, pos12, local_vel12, g1, g2, options)),
+            Way::Wide(a, b) => {
                 let hit = self
                     .core
                     .cast_shapes(
@@ -220,7 +235,10 @@ impl QueryDispatcher for SmoothDispatcher {
                     None => Ok(None),
                 }
             }
-            None => DefaultQueryDispatcher.cast_shapes(pos12, local_vel12, g1, g2, options),
+            Way::GuardedParry => guarded(ok(), || {
+                DefaultQueryDispatcher.cast_shapes(pos12, local_vel12, g1, g2, options)
+            }),
+            Way::Parry => DefaultQueryDispatcher.cast_shapes(pos12, local_vel12, g1, g2, options),
         }
     }
 
@@ -235,13 +253,10 @@ impl QueryDispatcher for SmoothDispatcher {
         stop_at_penetration: bool,
     ) -> Result<Option<ShapeCastHit>, Unsupported> {
         let (m1, m2, t0, t1, stop) = (motion1, motion2, start_time, end_time, stop_at_penetration);
-        if composite_pair(g1, g2) {
-            return guarded(cast_ok(m1, g1, m2, g2, t0, t1), || {
-                composite_cast_nonlinear(self, m1, g1, m2, g2, t0, t1, stop)
-            });
-        }
-        match widen_pair(g1, g2) {
-            Some((a, b)) => {
+        let ok = || cast_ok(m1, g1, m2, g2, t0, t1);
+        match Way::of(g1, g2) {
+            Way::Composite => guarded(ok(), || composite_cast_nonlinear(self, m1, g1, m2, g2, t0, t1, stop)),
+            Way::Wide(a, b) => {
                 let (m1, m2) = (motion64(m1), motion64(m2));
                 let hit = self
                     .core
@@ -252,7 +267,10 @@ impl QueryDispatcher for SmoothDispatcher {
                     None => Ok(None),
                 }
             }
-            None => DefaultQueryDispatcher.cast_shapes_nonlinear(m1, g1, m2, g2, t0, t1, stop),
+            Way::GuardedParry => guarded(ok(), || {
+                DefaultQueryDispatcher.cast_shapes_nonlinear(m1, g1, m2, g2, t0, t1, stop)
+            }),
+            Way::Parry => DefaultQueryDispatcher.cast_shapes_nonlinear(m1, g1, m2, g2, t0, t1, stop),
         }
     }
 }

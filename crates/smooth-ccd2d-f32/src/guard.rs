@@ -1,5 +1,6 @@
-//! What the f32 dispatcher refuses before parry2d's composite helpers see it, as the f64
-//! dispatcher does before parry2d-f64's (its `input_guard`): parry asserts that margins are
+//! What the f32 dispatcher refuses before parry2d's composite helpers, or parry2d's default
+//! dispatcher with one of this package's shapes, see it, as the f64 dispatcher does before
+//! parry2d-f64's (its `input_guard`): parry asserts that margins are
 //! non-negative and otherwise passes NaN and infinities through. Pairs answered by the f64
 //! crate are checked there, after widening; pairs with none of this package's shapes are
 //! parry2d's own, untouched.
@@ -10,10 +11,8 @@
 //! velocity or window not finite, or a reversed window. After the query: any non-finite number in
 //! the answer.
 
-use parry2d::math::{Pose, Real};
-use parry2d::query::{
-    ClosestPoints, Contact, NonlinearRigidMotion, ShapeCastHit, ShapeDistance, ShapeIntersection, Unsupported,
-};
+use parry2d::math::{Pose, Real, Vector};
+use parry2d::query::{NonlinearRigidMotion, ShapeCastOptions, Unsupported};
 use parry2d::shape::{HalfSpace, Shape};
 
 /// A pose parry can take: finite, with a unit rotation (to 1e-6).
@@ -36,6 +35,22 @@ pub(crate) fn inputs_ok(pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape, margin: Re
     margin >= 0.0 && pose_ok(pos12) && shape_ok(g1) && shape_ok(g2)
 }
 
+/// The inputs of a linear cast: those of a stationary query, a finite velocity, a finite
+/// non-negative target distance and a time limit that is not NaN.
+pub(crate) fn linear_cast_ok(
+    pos12: &Pose,
+    vel12: Vector,
+    g1: &dyn Shape,
+    g2: &dyn Shape,
+    options: &ShapeCastOptions,
+) -> bool {
+    inputs_ok(pos12, g1, g2, 0.0)
+        && vel12.is_finite()
+        && !options.max_time_of_impact.is_nan()
+        && options.target_distance.is_finite()
+        && options.target_distance >= 0.0
+}
+
 /// The inputs of a nonlinear cast over [t0, t1].
 pub(crate) fn cast_ok(
     m1: &NonlinearRigidMotion,
@@ -56,66 +71,25 @@ pub(crate) fn cast_ok(
     t0.is_finite() && t1.is_finite() && t0 <= t1 && motion_ok(m1) && motion_ok(m2) && shape_ok(g1) && shape_ok(g2)
 }
 
-/// An answer with only finite numbers.
-pub(crate) trait Finite {
+/// An answer with only finite numbers (the f64 crate's trait of the same name, for parry2d's
+/// answers; the impls are its text, `all_finite_impls!`).
+pub(crate) trait AllFinite {
     /// Every number in it is finite.
-    fn finite(&self) -> bool;
+    fn all_finite(&self) -> bool;
 }
 
-impl Finite for ShapeIntersection {
-    fn finite(&self) -> bool {
-        true
-    }
-}
-
-impl Finite for ShapeDistance {
-    fn finite(&self) -> bool {
-        self.distance.is_finite()
-    }
-}
-
-impl Finite for Contact {
-    fn finite(&self) -> bool {
-        self.dist.is_finite()
-            && self.point1.is_finite()
-            && self.point2.is_finite()
-            && self.normal1.is_finite()
-            && self.normal2.is_finite()
-    }
-}
-
-impl Finite for ClosestPoints {
-    fn finite(&self) -> bool {
-        match self {
-            ClosestPoints::WithinMargin(a, b) => a.is_finite() && b.is_finite(),
-            _ => true,
-        }
-    }
-}
-
-impl Finite for ShapeCastHit {
-    fn finite(&self) -> bool {
-        self.time_of_impact.is_finite()
-            && self.witness1.is_finite()
-            && self.witness2.is_finite()
-            && self.normal1.is_finite()
-            && self.normal2.is_finite()
-    }
-}
-
-impl<T: Finite> Finite for Option<T> {
-    fn finite(&self) -> bool {
-        self.as_ref().is_none_or(T::finite)
-    }
-}
+smooth_ccd2d::all_finite_impls!(parry2d, crate::guard::AllFinite);
 
 /// `query` when `ok`, its answer when finite; `Err(Unsupported)` otherwise.
-pub(crate) fn guarded<T: Finite>(ok: bool, query: impl FnOnce() -> Result<T, Unsupported>) -> Result<T, Unsupported> {
+pub(crate) fn guarded<T: AllFinite>(
+    ok: bool,
+    query: impl FnOnce() -> Result<T, Unsupported>,
+) -> Result<T, Unsupported> {
     if !ok {
         return Err(Unsupported);
     }
     let r = query()?;
-    if r.finite() {
+    if r.all_finite() {
         Ok(r)
     } else {
         Err(Unsupported)

@@ -18,7 +18,7 @@
 use crate::composite::{composite_manifolds, single_manifold};
 use crate::convert::{packed32, pose64, v32, v64};
 use crate::dispatcher::composite_pair;
-use crate::guard::inputs_ok;
+use crate::guard::{inputs_ok, AllFinite};
 use crate::shapes::own_f64;
 use crate::widen::widen_pair;
 use crate::SmoothDispatcher;
@@ -67,12 +67,7 @@ fn round_into<M, C: Default + Copy>(w: &q64::ContactManifold<(), ()>, m: &mut Co
             p.dist as f32,
         ));
     }
-    let finite = m.local_n1.is_finite()
-        && m.local_n2.is_finite()
-        && m.points
-            .iter()
-            .all(|p| p.local_p1.is_finite() && p.local_p2.is_finite() && p.dist.is_finite());
-    if !finite {
+    if !m.all_finite() {
         m.clear();
         return false;
     }
@@ -165,7 +160,14 @@ where
         manifold: &mut ContactManifold<M, C>,
     ) -> Result<(), Unsupported> {
         let Some((a, b)) = widen_pair(g1, g2) else {
-            return DefaultQueryDispatcher.contact_manifold_convex_convex(
+            // parry2d's; with one of this package's shapes (against a shape the core does not
+            // take), under the guards as in the dispatcher's route 3.
+            let ours = own_f64(g1).is_some() || own_f64(g2).is_some();
+            if ours && !inputs_ok(pos12, g1, g2, prediction) {
+                manifold.clear();
+                return Err(Unsupported);
+            }
+            DefaultQueryDispatcher.contact_manifold_convex_convex(
                 pos12,
                 g1,
                 g2,
@@ -173,7 +175,12 @@ where
                 normal_constraints2,
                 prediction,
                 manifold,
-            );
+            )?;
+            if ours && !manifold.all_finite() {
+                manifold.clear();
+                return Err(Unsupported);
+            }
+            return Ok(());
         };
         let mut wide = widened(manifold);
         let answered = widened_constraint(normal_constraints1, |nc1| {

@@ -390,3 +390,36 @@ fn manifolds_are_the_f64_manifolds_rounded() {
     }
     println!("manifolds: {n} points equal to the f64 ones rounded");
 }
+
+/// One of this package's shapes against a shape the f64 crate does not take (here a half-space
+/// whose normal is not finite) goes to parry2d through the support map, under the same guards:
+/// an error, never a NaN.
+#[test]
+fn our_shape_against_a_shape_the_core_refuses_is_guarded() {
+    let d = SmoothDispatcher::default();
+    let e = Ellipse::new(0.5, 0.2);
+    let bad_plane = parry2d::shape::HalfSpace::new(Vector::new(f32::NAN, 1.0));
+    let pos = Pose::translation(0.0, 1.0);
+    assert!(d.intersection_test(&pos, &bad_plane, &e).is_err());
+    assert!(d.distance(&pos, &bad_plane, &e).is_err());
+    assert!(d.contact(&pos, &e, &bad_plane, 0.1).is_err());
+    assert!(d.closest_points(&pos, &bad_plane, &e, 0.1).is_err());
+    let opts = ShapeCastOptions::with_max_time_of_impact(1.0);
+    assert!(d
+        .cast_shapes(&pos, Vector::new(0.0, -1.0), &bad_plane, &e, opts)
+        .is_err());
+    let still = parry2d::query::NonlinearRigidMotion::identity();
+    let falling = parry2d::query::NonlinearRigidMotion::new(pos, Vector::ZERO, Vector::new(0.0, -1.0), 0.0);
+    assert!(d
+        .cast_shapes_nonlinear(&still, &bad_plane, &falling, &e, 0.0, 1.0, true)
+        .is_err());
+    let mut manifolds: Vec<ContactManifold<(), ()>> = Vec::new();
+    assert!(d
+        .contact_manifolds(&pos, &bad_plane, &e, 0.1, &mut manifolds, &mut None)
+        .is_err());
+    assert!(manifolds.iter().all(|m| m.points.is_empty()));
+    // A good half-space is the f64 crate's: the ellipse 1 above the plane y = 0, 0.8 apart.
+    let plane = parry2d::shape::HalfSpace::new(Vector::Y);
+    let dist = d.distance(&pos, &plane, &e).expect("distance").distance;
+    assert!((dist - 0.8).abs() < 1e-6, "{dist}");
+}
