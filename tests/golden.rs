@@ -58,17 +58,25 @@ const FUZZ_CASES: u64 = 40_000;
 /// old way every class but `wild` kept its digest (`wild` changed through parry's composite
 /// helpers, which prune a compound's parts by the boxes); the rapier state changed with the
 /// broad phase's pairs. (`CapsuleEllipse`'s local box in closed form, the same commit, kept
-/// every bit.)
+/// every bit.) Last re-recorded when the search between two ellipse pieces on a part of the
+/// circle (a `CapsuleEllipse`'s half-ellipse against an ellipse or another one) took the
+/// descent's certified local minimum at once, as over the whole circle, and discarded the
+/// sub-arcs next to an arc's end where F is least by a bound about that end (before, such an
+/// arc could run out of its stack and the contact took the dispatcher's slower route): the same
+/// signed distances to 6e-15 of the size on 200,000 random pairs, witnesses on thin ellipses within
+/// 3e-13 of the size; `coincident`, `concentric`, `grazing` and `touching-at-t0` kept their
+/// digests, the rapier state changed. (Those arcs coming last in the walk, skipped by a lower
+/// bound, kept every bit.)
 const FUZZ_DIGESTS: [(&str, u64); 9] = [
     ("coincident", 0x391FFDFFB7B3FB19),
     ("concentric", 0xF50B9F1647698F73),
-    ("extreme-scale", 0x5FAC8CF09955E5B1),
+    ("extreme-scale", 0x20F576BE3FCE888D),
     ("grazing", 0x856F36F188DE42E1),
-    ("parry-pair", 0x5DC270301E1924B6),
-    ("random", 0xAA200F81101A66E3),
-    ("thin-ellipse", 0x8A22949A15173DB6),
+    ("parry-pair", 0x2AC80950BCC97312),
+    ("random", 0x83FED9F73B581212),
+    ("thin-ellipse", 0x8FDB6BE58D03ADA1),
     ("touching-at-t0", 0x992CED4BA058126E),
-    ("wild", 0xCB8EEFB4D33DD82A),
+    ("wild", 0x6E6F19C408B08BA7),
 ];
 
 /// Final-state hash of the rapier scene (re-recorded with issue 17: the CCD casts between its
@@ -78,8 +86,9 @@ const FUZZ_DIGESTS: [(&str, u64); 9] = [
 /// the exact contact query, 0x826D_5A8D_B06F_43B8 before its search skipped more arcs, and
 /// 0x8567_A3FB_7AF1_1BF1 before the feet's Newton steps took fewer divisions, 0x52B0_3332_ACF9_FC31
 /// before the warm-started descent between two ellipses, 0xE211_0D00_2F26_00C7 before the tight
-/// posed boxes of ellipses and rounded polygons).
-const RAPIER_STATE: u64 = 0x09FD_5E9D_ABB4_B5A2;
+/// posed boxes of ellipses and rounded polygons, 0x09FD_5E9D_ABB4_B5A2 before the search between
+/// two ellipse pieces on a part of the circle changed as above).
+const RAPIER_STATE: u64 = 0x973C_2FA2_DB3A_D289;
 
 /// FNV-1a of a sequence of words.
 fn fnv(words: impl IntoIterator<Item = u64>) -> u64 {

@@ -15,7 +15,7 @@ use core::f64::consts::{PI, TAU};
 use parry2d_f64::math::{Pose, Vector};
 use parry2d_f64::query::{ContactManifold, DefaultQueryDispatcher, PersistentQueryDispatcher};
 use parry2d_f64::shape::Shape;
-use smooth_ccd2d::{BallCurve, ConvexCurve, Ellipse, RoundedPolygon, SmoothDispatcher};
+use smooth_ccd2d::{BallCurve, CapsuleEllipse, ConvexCurve, Ellipse, RoundedPolygon, SmoothDispatcher};
 use std::hint::black_box;
 
 /// The overlaps compared: (label, signed distance as a fraction of the size).
@@ -133,6 +133,49 @@ pub fn kinds() -> Vec<Kind> {
         (
             TestShape::RoundedPolygon(RoundedPolygon::regular(7, 1.0, 0.15)),
             TestShape::Ellipse(Ellipse::new(0.5, 1.5)),
+        )
+    });
+    // Appended, so that the kinds above keep their random draws: the pairs of the pile
+    // (`examples/pile.rs`) not above — its `CapsuleEllipse`s against each other and against
+    // rounded polygons, two rounded polygons, ellipses on its box walls.
+    let capsule = |rng: &mut Rng, s: f64| {
+        CapsuleEllipse::new(
+            s * rng.uniform(0.2, 0.8),
+            s * rng.uniform(0.1, 0.8),
+            s * rng.uniform(0.1, 1.5),
+        )
+    };
+    extra("capsule_ellipse-capsule_ellipse", &mut |rng, _| {
+        let s2 = rng.uniform(0.3, 1.0);
+        (
+            TestShape::CapsuleEllipse(capsule(rng, 1.0)),
+            TestShape::CapsuleEllipse(capsule(rng, s2)),
+        )
+    });
+    extra("capsule_ellipse-rounded_polygon", &mut |rng, seed| {
+        let p = rounded(seed);
+        let s = p.bounding_radius() * rng.uniform(0.3, 1.0);
+        (TestShape::CapsuleEllipse(capsule(rng, s)), TestShape::RoundedPolygon(p))
+    });
+    extra("rounded_polygon-rounded_polygon", &mut |_, seed| {
+        (
+            TestShape::RoundedPolygon(rounded(seed)),
+            TestShape::RoundedPolygon(rounded(seed + 1000)),
+        )
+    });
+    extra("ellipse-cuboid", &mut |rng, _| {
+        let a = rng.uniform(0.2, 1.0);
+        let e = Ellipse::new(a, a * rng.log_uniform(0.05, 1.0));
+        let h = Vector::new(rng.uniform(0.3, 2.0), rng.uniform(0.1, 1.0));
+        let core = [
+            Vector::new(-h.x, -h.y),
+            Vector::new(h.x, -h.y),
+            h,
+            Vector::new(-h.x, h.y),
+        ];
+        (
+            TestShape::Ellipse(e),
+            TestShape::Cuboid(h, RoundedPolygon::new(&core, 0.0)),
         )
     });
     out

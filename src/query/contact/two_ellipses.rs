@@ -14,21 +14,26 @@
 //!   else the larger end), and F − r ≤ U, U = max(F(a), F(b)) − r scaled by 1/cos(half-width)
 //!   when positive (F − r is sublinear), so F″ ≥ μ = Σ aᵢ²bᵢ²/max kᵢ³ − U;
 //! * hence F ≥ F(m) + F′(m)·x + μx²/2 for |x| ≤ h about the midpoint m: a lower bound whose
-//!   error shrinks with the square of the width;
+//!   error shrinks with the square of the width; and about either end e, F ≥ F(e) ± F′(e)·x +
+//!   μx²/2 for 0 ≤ x ≤ 2h into the sub-arc, least at x = 0 or x = 2h when μ ≤ 0, which bounds the
+//!   sub-arcs next to an end of the arc where F rises into the arc by F(e) itself (the midpoint
+//!   bound stays below F(e) there, however narrow the sub-arc);
 //! * when μ > 0, F is convex on the sub-arc: its minimum is at an end unless F′ changes sign
 //!   inside, where the one root of the increasing F′ is found by Newton's method kept inside a
 //!   shrinking bracket (bisection when a step leaves it).
 //!
-//! Over the whole circle the search starts with a descent to a local minimum (Newton's method
-//! from the previous normal when rapier hands one back, else from the lowest of eight directions):
-//! it is the answer at once when certified (apart, or shallower than the two smallest radii of
-//! curvature: [`TwoEllipses::minimum`]); otherwise the widest of a few neighbourhoods of it on
-//! which μ > 0 (F convex, so the minimum there is this one) is left out of the search.
+//! The search starts with a descent to a local minimum (Newton's method from the lowest of the
+//! first directions of the arc, or over the whole circle from the previous normal when rapier
+//! hands one back): it is the answer at once when it lies in the arc and is certified (apart, or
+//! shallower than the two smallest radii of curvature: [`TwoEllipses::minimum`]); otherwise,
+//! over the whole circle, the widest of a few neighbourhoods of it on which μ > 0 (F convex, so
+//! the minimum there is this one) is left out of the search.
 //!
-//! A sub-arc is discarded when its bound exceeds the best value of F seen (at any end, midpoint
-//! or root), solved when convex, split in two otherwise. Discarding compares with the best value
-//! without tolerance, so the answer is the global minimum up to rounding; at a strict local
-//! minimum F″ > 0, so every sub-arc near one is eventually certified convex. A budget of
+//! A sub-arc is discarded when its bound reaches the best value of F seen (at any end, midpoint
+//! or root: that point is kept), solved when convex, split in two otherwise. Discarding compares
+//! with the best value without tolerance, so the answer is the global minimum up to rounding; at
+//! a strict local minimum F″ > 0, so every sub-arc near one is eventually certified convex, and
+//! next to a minimum at an end of the arc the end's bound discards it. A budget of
 //! sub-arcs ([`MAX_ARCS`]) bounds degenerate inputs (the caller then answers otherwise).
 
 use super::arc::in_arc;
@@ -48,6 +53,11 @@ const HALVINGS: usize = 8;
 const NEIGHBOURHOODS: [f64; 4] = [0.2, 0.05, 0.012, 0.003];
 /// Widest sub-arc the search starts from (radians).
 const START_WIDTH: f64 = core::f64::consts::FRAC_PI_4;
+/// Sub-arcs of a cover at most: the whole circle in sub-arcs of [`START_WIDTH`] (8), and one
+/// more should the division round up.
+const COVER: usize = 9;
+/// Depth of the search's stack of sub-arcs.
+const STACK: usize = 64;
 
 /// F on an arc where both pieces are ellipses.
 pub(crate) struct TwoEllipses {
@@ -146,7 +156,9 @@ impl TwoEllipses {
     /// certified global, without the search, when F < 0 there (apart: the separation is concave
     /// where positive) or F < ρ₁ + ρ₂ with ρᵢ = min(aᵢ, bᵢ)²/max(aᵢ, bᵢ) the ellipses' smallest
     /// radii of curvature (shallow: each ellipse is a convex body swelled by a disc of radius ρᵢ,
-    /// so the shrunk bodies are apart there, and their separation has that one maximum).
+    /// so the shrunk bodies are apart there, and their separation has that one maximum). On a
+    /// part of the circle the same local minimum, when the descent ends inside the part, is the
+    /// part's minimum too: F on the part is the two whole ellipses' F, whose global minimum it is.
     pub(crate) fn minimum(
         &self,
         a: Vector,
@@ -160,7 +172,9 @@ impl TwoEllipses {
             df: 0.0,
             k: [0.0; 2],
         };
-        let mut stack = [(blank, blank); 64];
+        // The first sub-arcs (a cover); the search's stack is filled from them only when the
+        // search runs (a certified descent answers without it).
+        let mut first = [(blank, blank); COVER];
         let mut found: Option<(f64, Vector)> = None;
         let mut bound = best;
         let full = a == b;
@@ -180,12 +194,12 @@ impl TwoEllipses {
             }
             if let Some((pa, pb)) = self.convex_neighbourhood(&low) {
                 note(&low, &mut bound, &mut found);
-                (top, _) = self.cover(pb.n, pa.n, &mut stack);
+                (top, _) = self.cover(pb.n, pa.n, &mut first);
                 covered = true;
             }
         }
         if !covered {
-            let (t, mut start) = self.cover(a, b, &mut stack);
+            let (t, mut start) = self.cover(a, b, &mut first);
             top = t;
             if let Some((low, _)) = warm {
                 bound = bound.min(low.f);
@@ -200,7 +214,7 @@ impl TwoEllipses {
             note(&start, &mut bound, &mut found);
             let (low, local) = self.descend(start);
             if full || in_arc(a, b, low.n) {
-                if local && full && self.certified(&low) {
+                if local && self.certified(&low) {
                     return Some((low.f < best).then_some((low.f, low.n)));
                 }
                 if local {
@@ -209,7 +223,7 @@ impl TwoEllipses {
                         // F convex on a neighbourhood of the local minimum: its minimum there is
                         // this one, and the search covers the rest of the circle only.
                         if let Some((pa, pb)) = self.convex_neighbourhood(&low) {
-                            (top, _) = self.cover(pb.n, pa.n, &mut stack);
+                            (top, _) = self.cover(pb.n, pa.n, &mut first);
                         }
                     }
                 } else {
@@ -218,6 +232,8 @@ impl TwoEllipses {
                 }
             }
         }
+        let mut stack = [(blank, blank); STACK];
+        stack[..top].copy_from_slice(&first[..top]);
         let mut budget = MAX_ARCS;
         while top > 0 {
             top -= 1;
@@ -247,8 +263,17 @@ impl TwoEllipses {
                 }
                 continue;
             }
-            let lower = pm.f - pm.df.abs() * h + 0.5 * mu * h * h;
-            if lower > bound || self.termwise_bound(&pa, &pb) > bound {
+            // Second-order bounds about the midpoint and about either end (F ≥ F(e) ± F′(e)x +
+            // μx²/2 over the sub-arc, μ ≤ 0: least at x = 0 or at the far end, x ≤ 2h): the
+            // end bounds discard the sub-arcs next to an end where the arc's minimum is that end.
+            let lower_mid = pm.f - pm.df.abs() * h + 0.5 * mu * h * h;
+            let w = 2.0 * h;
+            let lower_a = pa.f.min(pa.f + pa.df * w + 0.5 * mu * w * w);
+            let lower_b = pb.f.min(pb.f - pb.df * w + 0.5 * mu * w * w);
+            let lower = lower_mid.max(lower_a).max(lower_b);
+            // Nothing on the sub-arc is lower than the best value seen (a point already kept,
+            // or the caller's `best`): it may go.
+            if lower >= bound || self.termwise_bound(&pa, &pb) > bound {
                 continue;
             }
             if top + 2 > stack.len() {
@@ -300,7 +325,7 @@ impl TwoEllipses {
 
     /// Covers the arc from `a` counter-clockwise to `b` (the whole circle when `a == b`) with
     /// sub-arcs of at most [`START_WIDTH`] on `stack`: their number, and the lowest end.
-    fn cover(&self, a: Vector, b: Vector, stack: &mut [(Point, Point); 64]) -> (usize, Point) {
+    fn cover(&self, a: Vector, b: Vector, stack: &mut [(Point, Point); COVER]) -> (usize, Point) {
         let width = {
             let w = cross(a, b).atan2(a.dot(b));
             if w <= 0.0 {
@@ -309,7 +334,7 @@ impl TwoEllipses {
                 w
             }
         };
-        let pieces = (width / START_WIDTH).ceil().max(1.0) as usize;
+        let pieces = ((width / START_WIDTH).ceil().max(1.0) as usize).min(COVER);
         let (s, c) = sin_cos(width / pieces as f64);
         let first = self.at(a);
         let (mut prev, mut start) = (first, first);
