@@ -7,8 +7,10 @@
 //!   the crate on each case (`reliability::run_case`), FNV-1a over the bits of every number and
 //!   status returned, combined per scenario class.
 //! * rapier: the final state of `scenes::mixed_pile` (153 bodies, fast CCD shots) after 250 steps
-//!   with `SmoothDispatcher` as the narrow phase, on one worker (FNV-1a over the bits of every
-//!   body's pose and velocities).
+//!   with `SmoothDispatcher` as the narrow phase (FNV-1a over the bits of every body's pose and
+//!   velocities): the same bits with rapier built without its `parallel` feature (`cargo test
+//!   --test golden`) and with it, on its default pool (`cargo test --workspace`, where
+//!   `crates/parallel-tests` enables it).
 //!
 //! Run with `cargo test --test golden -- --nocapture` to see the digests.
 
@@ -123,7 +125,6 @@ fn fuzz_batch_answers_keep_their_recorded_bits() {
 fn rapier_scene_final_state_keeps_its_recorded_bits() {
     const STEPS: usize = 250;
     let mut w = World::new(NarrowPhase::with_query_dispatcher(SmoothDispatcher::default()));
-    w.pipeline.configure_thread_pool(1).expect("thread pool");
     let handles = mixed_pile(&mut w);
     for _ in 0..STEPS {
         w.step(GRAVITY, &());

@@ -328,10 +328,16 @@ where
             return Ok(());
         }
         if t1 != ShapeType::Custom && t2 != ShapeType::Custom {
-            // Two of parry's convex shapes: parry's manifold, behind the dispatcher's guards.
+            // Two of parry's convex shapes: parry's manifold, behind the dispatcher's guards. What
+            // parry's `contact_manifolds` does for two convex shapes (its first manifold, made if
+            // missing, from its convex routine), without its dispatch on the types again.
             let guards = input_guard::pose_ok(pos12) && input_guard::shapes_ok_typed(g1, t1, g2, t2);
             guarded(manifolds, guards)?;
-            DefaultQueryDispatcher.contact_manifolds(pos12, g1, g2, prediction, manifolds, workspace)?;
+            if manifolds.is_empty() {
+                manifolds.push(ContactManifold::new());
+            }
+            let manifold = &mut manifolds[0];
+            DefaultQueryDispatcher.contact_manifold_convex_convex(pos12, g1, g2, None, None, prediction, manifold)?;
             let finite = manifolds.iter().all(input_guard::AllFinite::all_finite);
             return guarded(manifolds, finite);
         }

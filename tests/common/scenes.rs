@@ -1,7 +1,7 @@
 //! The rapier scenes shared by the tests, examples and benches, built in a [`World`]:
 //!
 //! * the mixed pile ([`mixed_pile`]): 150 bodies of every shape on a box with three fast CCD
-//!   shots into it, stepped on 1 to 4 workers by `tests/threads.rs` and hashed by
+//!   shots into it, stepped on 1 to 4 workers by `crates/parallel-tests` and hashed by
 //!   `tests/golden.rs`;
 //! * the box pile ([`pile_bodies`], [`insert_pile`]): 200 ellipses, rounded polygons and
 //!   `CapsuleEllipse`s dropped into a box, drawn by [`Lcg`]; `examples/pile.rs` (through
@@ -24,7 +24,7 @@ use smooth_ccd2d::{CapsuleEllipse, ConvexCurve, Ellipse, RoundedPolygon, SmoothD
 pub const MIXED_PILE_BODIES: usize = 150;
 
 /// A pile of ellipses, rounded polygons and capsule-ellipses on a box, with three fast CCD
-/// ellipse shots into it (`tests/threads.rs`, `tests/golden.rs`). Returns the dynamic bodies.
+/// ellipse shots into it (`crates/parallel-tests`, `tests/golden.rs`). Returns the dynamic bodies.
 pub fn mixed_pile(world: &mut World) -> Vec<RigidBodyHandle> {
     let mut handles = Vec::new();
     world.insert(

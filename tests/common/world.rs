@@ -1,6 +1,6 @@
 //! A rapier world driven by `PhysicsPipeline::step`: the sets, the pipeline and one step, and a
 //! hash of its bodies' state. The one harness of the rapier tests (`tests/rapier_integration.rs`,
-//! `tests/threads.rs`, `tests/golden.rs`), the rapier examples (through `examples/common`) and
+//! `tests/golden.rs`, `crates/parallel-tests`), the rapier examples (through `examples/common`) and
 //! the pile benchmarks (through `benches/support`); each wraps it with what it records. The scenes
 //! built in it are in `scenes.rs`.
 #![allow(dead_code)]
