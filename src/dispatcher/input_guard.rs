@@ -57,6 +57,20 @@ pub(crate) fn shapes_ok_typed(g1: &dyn Shape, t1: ShapeType, g2: &dyn Shape, t2:
     ok(g1, t1) && ok(g2, t2)
 }
 
+/// [`shapes_ok`] for one of parry's boxes, read in place: half extents in `[0, PARRY_MAX_COORDINATE]`
+/// (NaN fails the comparisons).
+#[inline]
+pub(crate) fn cuboid_ok(c: &parry2d_f64::shape::Cuboid) -> bool {
+    let h = c.half_extents;
+    (0.0..=PARRY_MAX_COORDINATE).contains(&h.x) && (0.0..=PARRY_MAX_COORDINATE).contains(&h.y)
+}
+
+/// [`shapes_ok`] for one of parry's discs, read in place: radius in `[0, PARRY_MAX_COORDINATE]`.
+#[inline]
+pub(crate) fn ball_ok(b: &parry2d_f64::shape::Ball) -> bool {
+    (0.0..=PARRY_MAX_COORDINATE).contains(&b.radius)
+}
+
 pub(crate) use crate::error::AllFinite;
 
 /// Implements the trait `$finite` (one method, `fn all_finite(&self) -> bool`: every number in the

@@ -32,6 +32,8 @@
 //!   (trimesh / heightfield pseudo-normals) are applied to the smooth contact's normals.
 //! * **Everything else** goes to parry's `DefaultQueryDispatcher`; so does a pair of ours whose
 //!   stationary distance failed (parry then works through the shapes' polygonal feature maps).
+//!   The commonest of parry's own pairs (box–box, disc–disc, box–disc) skip parry's dispatch
+//!   ([`super::parry_pairs`]): parry's answer to the bit, cheaper than through parry.
 //!
 //! # Feature ids (warm starting)
 //!
@@ -52,6 +54,7 @@
 use super::composite::{composite_manifolds, is_composite_like, single_manifold};
 use super::input_guard;
 use super::parry_fallback::{pair_size, parry_within, pushed_together, TOUCH_PUSH};
+use super::parry_pairs;
 use super::route::{own_curve, route, RouteScratch};
 use super::support_shape::{exact_contact_of, support_shape, SupportScratch};
 use crate::curve::pieces::{flat_pieces, piece_index, piece_is_flat};
@@ -328,6 +331,10 @@ where
             return Ok(());
         }
         if t1 != ShapeType::Custom && t2 != ShapeType::Custom {
+            // The commonest pairs (box–box, disc–disc, box–disc): parry's answer without its dispatch.
+            if let Some(answer) = parry_pairs::common_manifold(pos12, g1, t1, g2, t2, prediction, manifolds) {
+                return answer;
+            }
             // Two of parry's convex shapes: parry's manifold, behind the dispatcher's guards. What
             // parry's `contact_manifolds` does for two convex shapes (its first manifold, made if
             // missing, from its convex routine), without its dispatch on the types again.

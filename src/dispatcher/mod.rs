@@ -61,6 +61,7 @@ pub(crate) mod inline_polygon;
 pub(crate) mod input_guard;
 mod manifold;
 pub(crate) mod parry_fallback;
+mod parry_pairs;
 mod queries;
 pub(crate) mod route;
 pub(crate) mod start_contact;
