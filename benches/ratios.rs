@@ -2,12 +2,13 @@
 //! impact per scenario class and outcome (and per scenario kind; the classes with no strictly
 //! convex side also against parry's own shapes, section `classes-native`), the stationary
 //! distance, the
-//! contact manifolds, parry's Box2D-style `sweep_time_of_impact` where it applies, how the time
+//! contact manifolds (also on parry's own pairs through the dispatcher), parry's Box2D-style `sweep_time_of_impact` where it applies, how the time
 //! of impact's cost grows with turns before impact, axis ratio and angular velocity (also drawn
 //! to `docs/figures/toi_growth.png`), and a rapier step of the pile.
 //!
 //! Run with `cargo bench --bench ratios` (all sections, a few minutes on two cores), or name
-//! sections: `cargo bench --bench ratios -- classes distance manifolds sweep growth pile`
+//! sections: `cargo bench --bench ratios -- classes distance manifolds parry-pairs sweep growth
+//! pile`
 //! (`classes` runs `classes-native` too; `native` alone runs only it).
 //!
 //! Method: every scenario is timed on its own, for ours and for parry alternately, in several
@@ -782,6 +783,9 @@ fn main() {
     }
     if want("manifolds") {
         support::manifolds::table();
+    }
+    if want("parry-pairs") {
+        support::parry_pairs::table();
     }
     if want("sweep") {
         sweep_tables();

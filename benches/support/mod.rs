@@ -2,7 +2,8 @@
 //! `benches/ratios.rs`): the scenario batches of `tests/common` as parry shapes, split by
 //! outcome, the casts being compared, the poses of the stationary benchmarks, the rounded
 //! polygon – disc scenarios of the sweep benchmarks, timing, parry's polygonal stand-ins, the
-//! comparison on parry's own shapes ([`native`]) and the pile ([`pile`]). The files of
+//! comparison on parry's own shapes ([`native`]), parry's own pairs through the dispatcher
+//! ([`parry_pairs`]) and the pile ([`pile`]). The files of
 //! `tests/common` it needs are included as they are (`#[path]`):
 //! the reference, the RNG, the scenario generator, the rapier world and its scenes, the resting
 //! scenes (whose polygonal stand-ins the benches share).
@@ -23,6 +24,7 @@ pub mod world;
 
 pub mod manifolds;
 pub mod native;
+pub mod parry_pairs;
 pub mod pile;
 
 use parry2d_f64::math::Pose;

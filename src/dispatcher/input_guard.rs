@@ -40,21 +40,23 @@ pub(crate) fn shapes_ok(g1: &dyn Shape, g2: &dyn Shape) -> bool {
 
 /// [`shapes_ok`] for shapes whose types (`t1`, `t2`) the caller already has.
 pub(crate) fn shapes_ok_typed(g1: &dyn Shape, t1: ShapeType, g2: &dyn Shape, t2: ShapeType) -> bool {
-    let ok = |g: &dyn Shape, t: ShapeType| {
-        if t == ShapeType::HalfSpace {
-            return g
-                .as_shape::<parry2d_f64::shape::HalfSpace>()
-                .is_some_and(|hs| hs.normal.is_finite());
-        }
-        let a = g.compute_local_aabb();
-        let m = a.mins.abs().max(a.maxs.abs());
-        a.mins.is_finite()
-            && a.maxs.is_finite()
-            && m.x.max(m.y) <= PARRY_MAX_COORDINATE
-            && a.mins.x <= a.maxs.x
-            && a.mins.y <= a.maxs.y
-    };
-    ok(g1, t1) && ok(g2, t2)
+    shape_ok(g1, t1) && shape_ok(g2, t2)
+}
+
+/// One shape of [`shapes_ok`], of type `t`.
+pub(crate) fn shape_ok(g: &dyn Shape, t: ShapeType) -> bool {
+    if t == ShapeType::HalfSpace {
+        return g
+            .as_shape::<parry2d_f64::shape::HalfSpace>()
+            .is_some_and(|hs| hs.normal.is_finite());
+    }
+    let a = g.compute_local_aabb();
+    let m = a.mins.abs().max(a.maxs.abs());
+    a.mins.is_finite()
+        && a.maxs.is_finite()
+        && m.x.max(m.y) <= PARRY_MAX_COORDINATE
+        && a.mins.x <= a.maxs.x
+        && a.mins.y <= a.maxs.y
 }
 
 /// [`shapes_ok`] for one of parry's boxes, read in place: half extents in `[0, PARRY_MAX_COORDINATE]`
@@ -82,18 +84,21 @@ pub(crate) use crate::error::AllFinite;
 macro_rules! all_finite_impls {
     ($parry:ident, $finite:path) => {
         impl $finite for $parry::query::ShapeIntersection {
+            #[inline]
             fn all_finite(&self) -> bool {
                 true
             }
         }
 
         impl $finite for $parry::query::ShapeDistance {
+            #[inline]
             fn all_finite(&self) -> bool {
                 self.distance.is_finite()
             }
         }
 
         impl $finite for $parry::query::Contact {
+            #[inline]
             fn all_finite(&self) -> bool {
                 self.dist.is_finite()
                     && self.point1.is_finite()
@@ -104,6 +109,7 @@ macro_rules! all_finite_impls {
         }
 
         impl $finite for $parry::query::ClosestPoints {
+            #[inline]
             fn all_finite(&self) -> bool {
                 match self {
                     $parry::query::ClosestPoints::WithinMargin(a, b) => a.is_finite() && b.is_finite(),
@@ -113,6 +119,7 @@ macro_rules! all_finite_impls {
         }
 
         impl $finite for $parry::query::ShapeCastHit {
+            #[inline]
             fn all_finite(&self) -> bool {
                 self.time_of_impact.is_finite()
                     && self.witness1.is_finite()
@@ -123,6 +130,7 @@ macro_rules! all_finite_impls {
         }
 
         impl<M, C> $finite for $parry::query::ContactManifold<M, C> {
+            #[inline]
             fn all_finite(&self) -> bool {
                 (self.points.is_empty() || (self.local_n1.is_finite() && self.local_n2.is_finite()))
                     && self
@@ -133,6 +141,7 @@ macro_rules! all_finite_impls {
         }
 
         impl<T: $finite> $finite for Option<T> {
+            #[inline]
             fn all_finite(&self) -> bool {
                 self.as_ref().is_none_or(<T as $finite>::all_finite)
             }

@@ -32,8 +32,8 @@
 //!   (trimesh / heightfield pseudo-normals) are applied to the smooth contact's normals.
 //! * **Everything else** goes to parry's `DefaultQueryDispatcher`; so does a pair of ours whose
 //!   stationary distance failed (parry then works through the shapes' polygonal feature maps).
-//!   The commonest of parry's own pairs (box–box, disc–disc, box–disc) skip parry's dispatch
-//!   ([`super::parry_pairs`]): parry's answer to the bit, cheaper than through parry.
+//!   The commonest of parry's own pairs (box–box, disc–disc, a disc against another convex
+//!   shape) skip parry's dispatch ([`super::parry_pairs`]): parry's answer to the bit.
 //!
 //! # Feature ids (warm starting)
 //!
@@ -60,7 +60,7 @@ use super::support_shape::{exact_contact_of, support_shape, SupportScratch};
 use crate::curve::pieces::{flat_pieces, piece_index, piece_is_flat};
 use crate::curve::ConvexCurve;
 use crate::numerics::math::{Pose, Real, Vector};
-use crate::parry_shape::FLAT_FEATURE_MAX_ANGLE;
+use crate::parry_shape::{face_id, vertex_id, FLAT_FEATURE_MAX_ANGLE};
 use crate::query::contact::{Contact, Feature};
 use crate::query::stationary::StationaryDistance;
 use crate::SmoothDispatcher;
@@ -75,14 +75,14 @@ use parry2d_f64::shape::{HalfSpace, PackedFeatureId, Shape, ShapeType};
 fn curve_fid(c: &dyn ConvexCurve, n: Vector) -> PackedFeatureId {
     let bp = c.breakpoints();
     if bp.is_empty() || !n.is_finite() {
-        return PackedFeatureId::vertex(0);
+        return vertex_id(0);
     }
     let (lo, hi) = c.phi_range_of_normal(n);
     let k = piece_index(bp, 0.5 * (lo + hi));
     if piece_is_flat(c, k) {
-        PackedFeatureId::face(k as u32)
+        face_id(k as u32)
     } else {
-        PackedFeatureId::vertex(2 * k as u32)
+        vertex_id(2 * k as u32)
     }
 }
 
@@ -118,8 +118,8 @@ fn flat_on_halfspace(c: &dyn ConvexCurve, nc: Vector, support: Vector) -> Option
     let f = best?;
     let nb = c.breakpoints().len().max(1) as u32;
     let k = f.index;
-    let id_start = PackedFeatureId::vertex(2 * k + 1);
-    let id_end = PackedFeatureId::vertex(2 * ((k + 1) % nb) + 1);
+    let id_start = vertex_id(2 * k + 1);
+    let id_end = vertex_id(2 * ((k + 1) % nb) + 1);
     // The support point replaces the end it has passed (it lies on a neighbouring piece).
     let t = crate::numerics::math::perp(f.normal);
     let (s0, s1, sp) = (f.start.dot(t), f.end.dot(t), support.dot(t));
@@ -178,14 +178,9 @@ fn manifold_from_distance<M, C: Default + Copy>(
                         continue;
                     }
                     let on_plane = pos_ch.inverse_transform_point(p - m * dist);
-                    manifold.points.push(TrackedContact::flipped(
-                        p,
-                        on_plane,
-                        id,
-                        PackedFeatureId::face(0),
-                        dist,
-                        !curve_first,
-                    ));
+                    manifold
+                        .points
+                        .push(TrackedContact::flipped(p, on_plane, id, face_id(0), dist, !curve_first));
                 }
                 manifold.match_contacts(&old_points);
                 return;
@@ -212,7 +207,7 @@ fn manifold_from_distance<M, C: Default + Copy>(
     if dist <= prediction && dist.is_finite() && p1.is_finite() && p2.is_finite() {
         let fid = |g: &dyn Shape, c: Option<&dyn ConvexCurve>, n: Vector| match c {
             Some(c) => curve_fid(c, n),
-            None if g.as_shape::<HalfSpace>().is_some() => PackedFeatureId::face(0),
+            None if g.as_shape::<HalfSpace>().is_some() => face_id(0),
             None => PackedFeatureId::UNKNOWN,
         };
         let fid1 = fid(g1, c1, sd.normal1);
@@ -237,16 +232,13 @@ fn manifold_from_contact<M, C: Default + Copy>(
     if !(n2.is_finite() && c.points[..c.len].iter().all(|p| local2(p.point2).is_finite())) {
         return false;
     }
-    let unknown = PackedFeatureId::UNKNOWN;
-    let mut old = [TrackedContact::<C>::new(Vector::ZERO, Vector::ZERO, unknown, unknown, 0.0); 4];
-    let n_old = manifold.points.len().min(old.len());
-    old[..n_old].copy_from_slice(&manifold.points[..n_old]);
+    let (old, n_old) = parry_pairs::previous_points(&manifold.points);
     manifold.clear();
     manifold.local_n1 = c.normal;
     manifold.local_n2 = n2;
     let fid = |f: Feature| match f {
-        Feature::Face(k) => PackedFeatureId::face(k),
-        Feature::Vertex(k) => PackedFeatureId::vertex(k),
+        Feature::Face(k) => face_id(k),
+        Feature::Vertex(k) => vertex_id(k),
     };
     for p in &c.points[..c.len] {
         if p.dist <= prediction {
@@ -331,7 +323,7 @@ where
             return Ok(());
         }
         if t1 != ShapeType::Custom && t2 != ShapeType::Custom {
-            // The commonest pairs (box–box, disc–disc, box–disc): parry's answer without its dispatch.
+            // The commonest pairs (box–box, disc–disc, disc–convex): parry's answer without its dispatch.
             if let Some(answer) = parry_pairs::common_manifold(pos12, g1, t1, g2, t2, prediction, manifolds) {
                 return answer;
             }

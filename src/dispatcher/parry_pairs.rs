@@ -1,11 +1,12 @@
-//! The contact manifolds of parry's commonest pairs (box–box, disc–disc, box–disc), the same bits
-//! as parry's, without parry's dispatch.
+//! The contact manifolds of parry's commonest pairs (box–box, disc–disc, and a disc against a box
+//! or another of parry's convex shapes), the same bits as parry's, without parry's dispatch.
 //!
 //! These are parry's own pairs, which [`crate::SmoothDispatcher`] hands on unchanged; a rapier
 //! scene is full of them, so the dispatcher must not cost more than parry there. Through parry's
 //! `DefaultQueryDispatcher` each goes through two matches on the shape types and four downcasts;
-//! here the types are read once and parry's routine for the pair is called directly (disc–disc,
-//! box–disc), behind the dispatcher's guards read off the shapes' fields.
+//! here the types are read once and parry's routine for the pair is called directly (a disc
+//! against a box or another convex shape), behind the dispatcher's guards (read off the fields
+//! of a box or a disc). Disc–disc is parry's routine with its face id written in place.
 //!
 //! Box–box is parry's `contact_manifold_cuboid_cuboid` rewritten in one routine: parry's goes
 //! through functions that do not inline across crates (the separating-axis test twice, the
@@ -27,22 +28,24 @@
 //! 4. the previous points' solver data is carried over to the new points with the same ids.
 //!
 //! `tests::the_box_manifold_is_parrys_to_the_bit` compares every bit against parry's routine, and
-//! `tests::the_dispatcher_answers_boxes_and_discs_as_parry_does_to_the_bit` the dispatcher's
+//! `tests::the_dispatcher_answers_parrys_own_pairs_as_parry_does_to_the_bit` the dispatcher's
 //! manifolds against parry's dispatcher's.
 
 use super::input_guard;
 use crate::numerics::math::{Pose, Real, Vector};
+use crate::parry_shape::{face_id, vertex_id};
 use parry2d_f64::math::VectorExt;
-use parry2d_f64::query::details::{contact_manifold_ball_ball, contact_manifold_convex_ball};
+use parry2d_f64::query::details::contact_manifold_convex_ball;
 use parry2d_f64::query::{ContactManifold, TrackedContact, Unsupported};
-use parry2d_f64::shape::{Cuboid, PackedFeatureId, Shape, ShapeType};
+use parry2d_f64::shape::{Ball, Cuboid, PackedFeatureId, Shape, ShapeType};
 
 /// The manifold of two of parry's commonest shapes, answered without parry's dispatch: box–box
-/// ([`box_box_manifold`]), disc–disc and box–disc (parry's own routines, called directly with
-/// the concrete shapes). The dispatcher's guards are those of every pair parry answers, read off
-/// the shapes' fields (a box's half extents, a disc's radius, in `[0, 1e100]`) rather than through
-/// their bounding boxes; the answer is parry's, bit for bit. `None` when the pair is not one of
-/// these (the caller goes on to its other routes); `prediction` is checked by the caller.
+/// ([`box_box_manifold`]), disc–disc ([`disc_disc_manifold`]), and a disc against a box, a
+/// capsule, a segment, a triangle or a polygon, round or not (parry's routine for a convex shape
+/// against a disc, called directly). The guards are the dispatcher's for every pair parry
+/// answers (a box's half extents and a disc's radius read off their fields, in `[0, 1e100]`;
+/// another shape's bounding box); the answer is parry's, bit for bit. `None` when the pair is not
+/// one of these (the caller goes on to its other routes); `prediction` is checked by the caller.
 /// Not inlined: the dispatcher's other routes then keep the code they had (inlined, rounded
 /// polygon – box measured 3–8 % slower, box – box 8 % faster).
 #[inline(never)]
@@ -55,60 +58,116 @@ pub(crate) fn common_manifold<M: Default, C: Default + Copy>(
     prediction: Real,
     manifolds: &mut Vec<ContactManifold<M, C>>,
 ) -> Option<Result<(), Unsupported>> {
-    use input_guard::{ball_ok, cuboid_ok, pose_ok};
-    match (t1, t2) {
-        (ShapeType::Cuboid, ShapeType::Cuboid) => {
-            let (c1, c2) = (g1.as_cuboid()?, g2.as_cuboid()?);
-            let ok = pose_ok(pos12) && cuboid_ok(c1) && cuboid_ok(c2);
-            Some(in_first(manifolds, ok, |m| {
-                box_box_manifold(pos12, c1, c2, prediction, m)
-            }))
+    use input_guard::{ball_ok, cuboid_ok, pose_ok, shape_ok};
+    /// The pair, its shapes read once (another convex shape against a disc: the disc).
+    enum Pair<'s> {
+        Boxes(&'s Cuboid, &'s Cuboid),
+        Discs(&'s Ball, &'s Ball),
+        BoxDisc(&'s Cuboid, &'s Ball),
+        DiscBox(&'s Ball, &'s Cuboid),
+        ConvexDisc(&'s Ball),
+        DiscConvex(&'s Ball),
+    }
+    // parry's convex shapes other than a disc, which parry answers against a disc by projecting
+    // the disc's centre.
+    let convex = |t: ShapeType| {
+        matches!(
+            t,
+            ShapeType::Capsule
+                | ShapeType::Segment
+                | ShapeType::Triangle
+                | ShapeType::ConvexPolygon
+                | ShapeType::RoundCuboid
+                | ShapeType::RoundTriangle
+                | ShapeType::RoundConvexPolygon
+        )
+    };
+    let pair = match (t1, t2) {
+        (ShapeType::Cuboid, ShapeType::Cuboid) => Pair::Boxes(g1.as_cuboid()?, g2.as_cuboid()?),
+        (ShapeType::Ball, ShapeType::Ball) => Pair::Discs(g1.as_ball()?, g2.as_ball()?),
+        (ShapeType::Cuboid, ShapeType::Ball) => Pair::BoxDisc(g1.as_cuboid()?, g2.as_ball()?),
+        (ShapeType::Ball, ShapeType::Cuboid) => Pair::DiscBox(g1.as_ball()?, g2.as_cuboid()?),
+        (t, ShapeType::Ball) if convex(t) => Pair::ConvexDisc(g2.as_ball()?),
+        (ShapeType::Ball, t) if convex(t) => Pair::DiscConvex(g1.as_ball()?),
+        _ => return None,
+    };
+    let ok = pose_ok(pos12)
+        && match pair {
+            Pair::Boxes(c1, c2) => cuboid_ok(c1) && cuboid_ok(c2),
+            Pair::Discs(b1, b2) => ball_ok(b1) && ball_ok(b2),
+            Pair::BoxDisc(c, b) | Pair::DiscBox(b, c) => cuboid_ok(c) && ball_ok(b),
+            Pair::ConvexDisc(b) => ball_ok(b) && shape_ok(g1, t1),
+            Pair::DiscConvex(b) => ball_ok(b) && shape_ok(g2, t2),
+        };
+    if !ok {
+        return Some(refused(manifolds));
+    }
+    if manifolds.is_empty() {
+        manifolds.push(ContactManifold::new());
+    }
+    let m = &mut manifolds[0];
+    match pair {
+        Pair::Boxes(c1, c2) => box_box_manifold(pos12, c1, c2, prediction, m),
+        Pair::Discs(b1, b2) => disc_disc_manifold(pos12, b1, b2, prediction, m),
+        // parry's `contact_manifold_convex_ball_shapes`, without its downcast again.
+        Pair::ConvexDisc(b2) | Pair::BoxDisc(_, b2) => {
+            contact_manifold_convex_ball(pos12, g1, b2, None, None, prediction, m, false)
         }
-        (ShapeType::Ball, ShapeType::Ball) => {
-            let (b1, b2) = (g1.as_ball()?, g2.as_ball()?);
-            let ok = pose_ok(pos12) && ball_ok(b1) && ball_ok(b2);
-            Some(in_first(manifolds, ok, |m| {
-                contact_manifold_ball_ball(pos12, b1, b2, prediction, m)
-            }))
+        Pair::DiscConvex(b1) | Pair::DiscBox(b1, _) => {
+            contact_manifold_convex_ball(&pos12.inverse(), g2, b1, None, None, prediction, m, true)
         }
-        (ShapeType::Cuboid, ShapeType::Ball) => {
-            let (c1, b2) = (g1.as_cuboid()?, g2.as_ball()?);
-            let ok = pose_ok(pos12) && cuboid_ok(c1) && ball_ok(b2);
-            Some(in_first(manifolds, ok, |m| {
-                contact_manifold_convex_ball(pos12, c1, b2, None, None, prediction, m, false)
-            }))
-        }
-        (ShapeType::Ball, ShapeType::Cuboid) => {
-            let (b1, c2) = (g1.as_ball()?, g2.as_cuboid()?);
-            let ok = pose_ok(pos12) && ball_ok(b1) && cuboid_ok(c2);
-            Some(in_first(manifolds, ok, |m| {
-                contact_manifold_convex_ball(&pos12.inverse(), c2, b1, None, None, prediction, m, true)
-            }))
-        }
-        _ => None,
+    }
+    if input_guard::AllFinite::all_finite(&manifolds[0]) {
+        Some(Ok(()))
+    } else {
+        Some(refused(manifolds))
     }
 }
 
-/// Runs `compute` on the first manifold (made if missing), as parry's `contact_manifolds` does
-/// for a convex pair, when the guards hold (`ok`); `Err(Unsupported)` with every manifold cleared
-/// when they do not, or when the answer has a number that is not finite.
-#[inline]
-fn in_first<M: Default, C: Default + Copy>(
-    manifolds: &mut Vec<ContactManifold<M, C>>,
-    ok: bool,
-    compute: impl FnOnce(&mut ContactManifold<M, C>),
-) -> Result<(), Unsupported> {
-    if ok {
-        if manifolds.is_empty() {
-            manifolds.push(ContactManifold::new());
-        }
-        compute(&mut manifolds[0]);
-        if input_guard::AllFinite::all_finite(&manifolds[0]) {
-            return Ok(());
-        }
-    }
+/// The dispatcher's answer to a pair its guards refuse: every manifold cleared, `Unsupported`.
+#[cold]
+fn refused<M, C: Default + Copy>(manifolds: &mut [ContactManifold<M, C>]) -> Result<(), Unsupported> {
     manifolds.iter_mut().for_each(|m| m.clear());
     Err(Unsupported)
+}
+
+/// parry's `contact_manifold_ball_ball`, bit for bit, with its face id written in place (parry's
+/// constructor does not inline across crates: it was a fifth of a disc pair's time). Centres
+/// `d = t` apart: distance `|d| − r₁ − r₂`, normal `d/|d|` (`y` for coincident centres), the
+/// point on each disc along it; one point, kept (with its solver data) when there was one.
+#[inline]
+fn disc_disc_manifold<M, C: Default + Copy>(
+    pos12: &Pose,
+    ball1: &Ball,
+    ball2: &Ball,
+    prediction: Real,
+    manifold: &mut ContactManifold<M, C>,
+) {
+    let (radius_a, radius_b) = (ball1.radius, ball2.radius);
+    let dcenter = pos12.translation;
+    let center_dist = dcenter.length();
+    let dist = center_dist - radius_a - radius_b;
+    if dist < prediction {
+        let local_n1 = if center_dist != 0.0 {
+            dcenter / center_dist
+        } else {
+            Vector::Y
+        };
+        let local_n2 = pos12.rotation.inverse() * -local_n1;
+        let local_p1 = local_n1 * radius_a;
+        let local_p2 = local_n2 * radius_b;
+        let fid = face_id(0);
+        let contact = TrackedContact::new(local_p1, local_p2, fid, fid, dist);
+        if !manifold.points.is_empty() {
+            manifold.points[0].copy_geometry_from(contact);
+        } else {
+            manifold.points.push(contact);
+        }
+        manifold.local_n1 = local_n1;
+        manifold.local_n2 = local_n2;
+    } else {
+        manifold.points.clear();
+    }
 }
 
 /// parry's `contact_manifold_cuboid_cuboid(pos12, c1, c2, prediction, manifold)`, bit for bit
@@ -145,22 +204,8 @@ pub(crate) fn box_box_manifold<M, C: Default + Copy>(
         best = sep3;
     }
 
-    // The previous points (at most two in 2D), for their solver data: copied, as parry's
-    // `clone` of them does, without the call.
-    let n_old = manifold.points.len();
-    let old = match manifold.points.as_slice() {
-        [a, b, ..] => [*a, *b],
-        [a] => [*a; 2],
-        [] => {
-            [TrackedContact::new(
-                Vector::ZERO,
-                Vector::ZERO,
-                PackedFeatureId::UNKNOWN,
-                PackedFeatureId::UNKNOWN,
-                0.0,
-            ); 2]
-        }
-    };
+    // The previous points, for their solver data (parry clones them; a copy, without the call).
+    let (old, n_old) = previous_points(&manifold.points);
     manifold.clear();
 
     let local_n2 = pos21.rotation * -best.1;
@@ -170,7 +215,24 @@ pub(crate) fn box_box_manifold<M, C: Default + Copy>(
     manifold.local_n1 = best.1;
     manifold.local_n2 = local_n2;
 
-    manifold.match_contacts(&old[..n_old.min(2)]);
+    manifold.match_contacts(&old[..n_old]);
+}
+
+/// A copy of a manifold's points (at most two in 2D) and their number, to match the new points
+/// against once the manifold is rebuilt ([`ContactManifold::match_contacts`]).
+#[inline]
+pub(crate) fn previous_points<C: Default + Copy>(points: &[TrackedContact<C>]) -> ([TrackedContact<C>; 2], usize) {
+    match points {
+        [a, b, ..] => ([*a, *b], 2),
+        [a] => ([*a; 2], 1),
+        [] => {
+            let unknown = PackedFeatureId::UNKNOWN;
+            (
+                [TrackedContact::new(Vector::ZERO, Vector::ZERO, unknown, unknown, 0.0); 2],
+                0,
+            )
+        }
+    }
 }
 
 /// parry's `cuboid_cuboid_find_local_separating_normal_oneway` in 2D: the largest separation of
@@ -222,17 +284,9 @@ struct Face {
     fid: PackedFeatureId,
 }
 
-/// parry's header bits of a vertex id (`PackedFeatureId::vertex(code)` is `0b01 << 30 | code`),
-/// written in place: parry's constructor checks the code with an assertion that does not inline.
-/// A box's codes are below 64.
-const VERTEX_HEADER: u32 = 0b01 << 30;
-
-/// parry's header bits of a face id (`PackedFeatureId::face(code)`), as [`VERTEX_HEADER`].
-const FACE_HEADER: u32 = 0b11 << 30;
-
 /// parry's `Cuboid::vertex_feature_id`: the signs of the vertex's coordinates, as two bits.
 #[inline]
-fn vertex_id(v: Vector) -> u32 {
+fn vertex_code(v: Vector) -> u32 {
     (((v.x.to_bits() >> 31) & 0b001) | ((v.y.to_bits() >> 30) & 0b010)) as u32
 }
 
@@ -249,12 +303,12 @@ fn support_face(he: Vector, dir: Vector) -> Face {
             Vector::new(he.x.copysign(dir.x), -he.y),
         ],
     };
-    let (v1, v2) = (vertex_id(vertices[0]), vertex_id(vertices[1]));
+    let (v1, v2) = (vertex_code(vertices[0]), vertex_code(vertices[1]));
     let fid = (v1.max(v2) << 2) | v1.min(v2) | 0b11_00_00;
     Face {
         vertices,
-        vids: [PackedFeatureId(VERTEX_HEADER | v1), PackedFeatureId(VERTEX_HEADER | v2)],
-        fid: PackedFeatureId(FACE_HEADER | fid),
+        vids: [vertex_id(v1), vertex_id(v2)],
+        fid: face_id(fid),
     }
 }
 
@@ -417,19 +471,34 @@ mod tests {
     }
 
     #[test]
-    fn the_dispatcher_answers_boxes_and_discs_as_parry_does_to_the_bit() {
+    fn the_dispatcher_answers_parrys_own_pairs_as_parry_does_to_the_bit() {
         use parry2d_f64::query::{DefaultQueryDispatcher, PersistentQueryDispatcher};
-        use parry2d_f64::shape::Ball;
+        use parry2d_f64::shape::{Ball, Capsule, RoundTriangle, Segment, Triangle};
         let d = crate::SmoothDispatcher::default();
         let mut rng = Lcg(0xD15C);
         let mut cases = 0;
         let mut with_points = 0;
-        for _ in 0..40_000 {
+        for _ in 0..60_000 {
+            // Discs and boxes most often (the pairs the dispatcher answers without parry's
+            // dispatch), and the other convex shapes parry answers against a disc.
             let shape = |rng: &mut Lcg| -> Box<dyn Shape> {
-                if below(rng, 2) == 0 {
-                    Box::new(Ball::new(extent(rng)))
-                } else {
-                    Box::new(Cuboid::new(Vector::new(extent(rng), extent(rng))))
+                let point = |rng: &mut Lcg| Vector::new(rng.range(-1.0, 1.0), rng.range(-1.0, 1.0)) * extent(rng);
+                match below(rng, 8) {
+                    0..=2 => Box::new(Ball::new(extent(rng))),
+                    3..=4 => Box::new(Cuboid::new(Vector::new(extent(rng), extent(rng)))),
+                    5 => Box::new(Capsule::new(point(rng), point(rng), extent(rng))),
+                    6 => Box::new(Segment::new(point(rng), point(rng))),
+                    _ => {
+                        let t = Triangle::new(point(rng), point(rng), point(rng));
+                        if below(rng, 2) == 0 {
+                            Box::new(t)
+                        } else {
+                            Box::new(RoundTriangle {
+                                inner_shape: t,
+                                border_radius: extent(rng),
+                            })
+                        }
+                    }
                 }
             };
             let (g1, g2) = (shape(&mut rng), shape(&mut rng));
@@ -468,14 +537,14 @@ mod tests {
             cases += 1;
             with_points += usize::from(theirs.iter().any(|m| !m.points.is_empty()));
         }
-        println!("box and disc pairs through the dispatcher, bit for bit: {cases} cases, {with_points} with points");
+        println!("parry's own pairs through the dispatcher, bit for bit: {cases} cases, {with_points} with points");
         assert!(with_points > cases / 4, "too few touching cases: {with_points}");
     }
 
     #[test]
-    fn bad_boxes_discs_and_poses_are_refused_with_the_manifolds_cleared() {
+    fn bad_shapes_and_poses_of_parrys_pairs_are_refused_with_the_manifolds_cleared() {
         use parry2d_f64::query::PersistentQueryDispatcher;
-        use parry2d_f64::shape::Ball;
+        use parry2d_f64::shape::{Ball, Capsule, Segment, Triangle};
         let d = crate::SmoothDispatcher::default();
         let good: [Box<dyn Shape>; 2] = [Box::new(Ball::new(0.5)), Box::new(Cuboid::new(Vector::new(0.5, 0.3)))];
         let bad: Vec<Box<dyn Shape>> = vec![
@@ -485,6 +554,10 @@ mod tests {
             Box::new(Cuboid::new(Vector::new(-0.5, 0.3))),
             Box::new(Cuboid::new(Vector::new(0.5, Real::NAN))),
             Box::new(Cuboid::new(Vector::new(Real::INFINITY, 0.3))),
+            Box::new(Capsule::new(Vector::ZERO, Vector::X, Real::NAN)),
+            Box::new(Capsule::new(Vector::ZERO, Vector::X, -2.0)),
+            Box::new(Segment::new(Vector::ZERO, Vector::new(Real::NAN, 1.0))),
+            Box::new(Triangle::new(Vector::ZERO, Vector::X, Vector::new(0.0, 2e100))),
         ];
         let at = Pose::new(Vector::new(0.6, 0.1), 0.3);
         let mut bad_poses = vec![
@@ -528,6 +601,6 @@ mod tests {
                 }
             }
         }
-        println!("refused {refused} bad box and disc queries");
+        println!("refused {refused} bad queries of parry's own pairs");
     }
 }

@@ -12,6 +12,33 @@ use parry2d_f64::shape::{PackedFeatureId, PolygonalFeature};
 /// point) instead of a short tangent segment.
 pub const FLAT_FEATURE_MAX_ANGLE: f64 = 0.02;
 
+/// The header bits of parry's vertex feature ids (`vertex_id(code)` is
+/// `0b01 << 30 | code`).
+const VERTEX_HEADER: u32 = 0b01 << 30;
+
+/// The header bits of parry's face feature ids (`face_id(code)` is
+/// `0b11 << 30 | code`).
+const FACE_HEADER: u32 = 0b11 << 30;
+
+/// The bits a feature code may use (below the two header bits).
+const CODE_MASK: u32 = !(0b11 << 30);
+
+/// parry's `vertex_id(code)`, written in place: parry's constructor does not inline
+/// across crates (it checks the code with an assertion), and a manifold builds up to four ids.
+/// The codes here are piece indices, far below 2³⁰ (checked in debug builds).
+#[inline]
+pub(crate) fn vertex_id(code: u32) -> PackedFeatureId {
+    debug_assert_eq!(code & !CODE_MASK, 0);
+    PackedFeatureId(VERTEX_HEADER | (code & CODE_MASK))
+}
+
+/// parry's `face_id(code)`, written in place (see [`vertex_id`]).
+#[inline]
+pub(crate) fn face_id(code: u32) -> PackedFeatureId {
+    debug_assert_eq!(code & !CODE_MASK, 0);
+    PackedFeatureId(FACE_HEADER | (code & CODE_MASK))
+}
+
 /// Half-length of a tangent feature, relative to the bounding radius, at most.
 const TANGENT_FEATURE_REL: f64 = 1e-4;
 /// Half-length of a tangent feature, relative to the bounding radius, at least.
@@ -46,8 +73,8 @@ pub(crate) fn tangent_feature(p: Vector, n: Vector, rho: f64, size: f64, out: &m
     let t = perp(n) * half;
     *out = PolygonalFeature {
         vertices: [p - t, p + t],
-        vids: [PackedFeatureId::vertex(0), PackedFeatureId::vertex(1)],
-        fid: PackedFeatureId::face(0),
+        vids: [vertex_id(0), vertex_id(1)],
+        fid: face_id(0),
         num_vertices: 2,
     };
 }
@@ -69,8 +96,8 @@ fn flat_feature(f: &FlatPiece, p: Vector, size: f64, out: &mut PolygonalFeature)
     let k = f.index;
     *out = PolygonalFeature {
         vertices,
-        vids: [PackedFeatureId::vertex(2 * k + 2), PackedFeatureId::vertex(2 * k + 3)],
-        fid: PackedFeatureId::face(k + 1),
+        vids: [vertex_id(2 * k + 2), vertex_id(2 * k + 3)],
+        fid: face_id(k + 1),
         num_vertices: 2,
     };
 }
@@ -96,4 +123,17 @@ pub(crate) fn curve_feature(c: &dyn ConvexCurve, flats: &[FlatPiece], dir: Vecto
     }
     let (p, rho) = support_and_curvature(c, n);
     tangent_feature(p, n, rho, size, out);
+}
+
+#[cfg(test)]
+mod id_tests {
+    use super::*;
+
+    #[test]
+    fn the_inlined_feature_ids_are_parrys() {
+        for code in (0..4096).chain([(1 << 30) - 1]) {
+            assert_eq!(vertex_id(code), PackedFeatureId::vertex(code));
+            assert_eq!(face_id(code), PackedFeatureId::face(code));
+        }
+    }
 }

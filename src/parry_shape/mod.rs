@@ -69,6 +69,7 @@ mod ray;
 mod rounded_polygon;
 
 pub use features::FLAT_FEATURE_MAX_ANGLE;
+pub(crate) use features::{face_id, vertex_id};
 
 use crate::curve::ConvexCurve;
 use crate::numerics::math::{Real, Vector};

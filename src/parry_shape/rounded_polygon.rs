@@ -4,6 +4,7 @@
 use super::aabb_ccd_thickness;
 use super::mass::{mass_from_moments, rounded_polygon_moments};
 use super::ray::curve_ray;
+use super::{face_id, vertex_id};
 use crate::curve::pieces::piece_index;
 use crate::curve::ConvexCurve;
 use crate::custom_shape_common;
@@ -14,9 +15,7 @@ use core::f64::consts::FRAC_PI_4;
 use parry2d_f64::bounding_volume::{Aabb, BoundingSphere};
 use parry2d_f64::mass_properties::MassProperties;
 use parry2d_f64::query::{PointProjection, PointQuery, Ray, RayCast, RayIntersection};
-use parry2d_f64::shape::{
-    FeatureId, PackedFeatureId, PolygonalFeature, PolygonalFeatureMap, Shape, ShapeType, SupportMap, TypedShape,
-};
+use parry2d_f64::shape::{FeatureId, PolygonalFeature, PolygonalFeatureMap, Shape, ShapeType, SupportMap, TypedShape};
 
 impl RoundedPolygon {
     /// Exact closest boundary point, its outward normal and feature (vertex i: corner arc i;
@@ -110,11 +109,8 @@ impl PolygonalFeatureMap for RoundedPolygon {
         let j = (best + 1) % n.max(1);
         *out_feature = PolygonalFeature {
             vertices: [v[best] + shift, v[j] + shift],
-            vids: [
-                PackedFeatureId::vertex(2 * best as u32),
-                PackedFeatureId::vertex(2 * j as u32),
-            ],
-            fid: PackedFeatureId::face(2 * best as u32 + 1),
+            vids: [vertex_id(2 * best as u32), vertex_id(2 * j as u32)],
+            fid: face_id(2 * best as u32 + 1),
             num_vertices: 2,
         };
     }

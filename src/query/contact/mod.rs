@@ -130,7 +130,8 @@ pub(crate) fn contact(
     if !(s0.place(shape1, &Pose::IDENTITY) && s1.place(shape2, pos12)) {
         return None;
     }
-    let mut walk = Walk::new(&s0, &s1);
+    let mut walk = Walk::blank(&s0, &s1);
+    walk.merge();
     walk.hint = hint.filter(|h| h.is_finite() && (h.length() - 1.0).abs() < 1e-6);
     let m = walk.minimum()?;
     let one = witness_point(&walk, &m);

@@ -81,9 +81,37 @@ pub(crate) struct Walk<'a> {
 
 impl<'a> Walk<'a> {
     /// Merges the breakpoints of both sides counter-clockwise and evaluates F at each.
-    #[inline(always)]
+    #[cfg(test)]
     pub(crate) fn new(s0: &'a Placed, s1: &'a Placed) -> Self {
-        let sides = [s0, s1];
+        let mut w = Walk::blank(s0, s1);
+        w.merge();
+        w
+    }
+
+    /// A walk of the two sides with no breakpoint merged yet.
+    #[inline(always)]
+    pub(crate) fn blank(s0: &'a Placed, s1: &'a Placed) -> Self {
+        let blank = Entry {
+            value: 0.0,
+            side: 0,
+            index: 0,
+            active: [0, 0],
+        };
+        Walk {
+            sides: [s0, s1],
+            entries: [blank; 2 * MAX_BREAKPOINTS],
+            len: 0,
+            hint: None,
+        }
+    }
+
+    /// [`Walk::new`] on a blank walk, in place (the walk is half a kilobyte: returned by value
+    /// from `new`, it is copied).
+    #[inline(always)]
+    pub(crate) fn merge(&mut self) {
+        let w = self;
+        let sides = w.sides;
+        let [s0, s1] = sides;
         let start = if s0.len > 0 {
             s0.normals[0]
         } else if s1.len > 0 {
@@ -91,18 +119,7 @@ impl<'a> Walk<'a> {
         } else {
             Vector::X
         };
-        let blank = Entry {
-            value: 0.0,
-            side: 0,
-            index: 0,
-            active: [0, 0],
-        };
-        let mut w = Walk {
-            sides,
-            entries: [blank; 2 * MAX_BREAKPOINTS],
-            len: 0,
-            hint: None,
-        };
+        w.len = 0;
         // Each side's breakpoints from the first after `start` on (they are cyclically sorted).
         let mut first = [0usize; 2];
         let mut halves = [[0u8; MAX_BREAKPOINTS]; 2];
@@ -139,7 +156,6 @@ impl<'a> Walk<'a> {
             };
             w.len += 1;
         }
-        w
     }
 
     /// The indices of the pieces active after merged breakpoint i (the only pieces with no
