@@ -80,7 +80,7 @@ pub(crate) struct Walk<'a> {
 }
 
 impl<'a> Walk<'a> {
-    /// Merges the breakpoints of both sides counter-clockwise and evaluates F at each.
+    /// A blank walk, merged ([`Walk::merge`]): the tests' shorthand.
     #[cfg(test)]
     pub(crate) fn new(s0: &'a Placed, s1: &'a Placed) -> Self {
         let mut w = Walk::blank(s0, s1);
@@ -105,8 +105,8 @@ impl<'a> Walk<'a> {
         }
     }
 
-    /// [`Walk::new`] on a blank walk, in place (the walk is half a kilobyte: returned by value
-    /// from `new`, it is copied).
+    /// Merges the breakpoints of both sides counter-clockwise and evaluates F at each, in place
+    /// on a blank walk (the walk is half a kilobyte: built and returned by value, it was copied).
     #[inline(always)]
     pub(crate) fn merge(&mut self) {
         let w = self;
