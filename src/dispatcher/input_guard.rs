@@ -231,3 +231,45 @@ pub(crate) fn cast_window_ok(
     }
     Ok(true)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::numerics::math::Vector;
+    use parry2d_f64::shape::{Ball, Cuboid};
+
+    /// The guards read off a box's or a disc's fields ([`cuboid_ok`], [`ball_ok`]) refuse exactly
+    /// what the shared bounding-box guard ([`shape_ok`]) refuses: signed zeros, tiny, huge,
+    /// negative, infinite and NaN sizes.
+    #[test]
+    fn the_field_guards_agree_with_the_bounding_box_guard() {
+        let sizes = [
+            0.0,
+            -0.0,
+            f64::MIN_POSITIVE,
+            -f64::MIN_POSITIVE,
+            1e-300,
+            0.5,
+            -0.5,
+            1e100,
+            1.0000000000000002e100,
+            -1e100,
+            f64::MAX,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
+        ];
+        let mut checked = 0;
+        for &a in &sizes {
+            let ball = Ball::new(a);
+            assert_eq!(ball_ok(&ball), shape_ok(&ball, ShapeType::Ball), "radius {a}");
+            for &b in &sizes {
+                let c = Cuboid::new(Vector::new(a, b));
+                assert_eq!(cuboid_ok(&c), shape_ok(&c, ShapeType::Cuboid), "half extents {a}, {b}");
+                checked += 1;
+            }
+        }
+        assert!(sizes.iter().any(|&a| !ball_ok(&Ball::new(a))) && ball_ok(&Ball::new(0.5)));
+        assert_eq!(checked, sizes.len() * sizes.len());
+    }
+}

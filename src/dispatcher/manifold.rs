@@ -257,7 +257,10 @@ fn manifold_from_contact<M, C: Default + Copy>(
 
 /// The dispatcher's guard around parry's manifolds: when `ok` is false (a bad pose or shape in,
 /// a non-finite contact out), the manifolds are cleared and the pair is `Unsupported`.
-fn guarded<M, C: Default + Copy>(manifolds: &mut [ContactManifold<M, C>], ok: bool) -> Result<(), Unsupported> {
+pub(super) fn guarded<M, C: Default + Copy>(
+    manifolds: &mut [ContactManifold<M, C>],
+    ok: bool,
+) -> Result<(), Unsupported> {
     if ok {
         return Ok(());
     }

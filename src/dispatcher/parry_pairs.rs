@@ -32,6 +32,7 @@
 //! manifolds against parry's dispatcher's.
 
 use super::input_guard;
+use super::manifold::guarded;
 use crate::numerics::math::{Pose, Real, Vector};
 use crate::parry_shape::{face_id, vertex_id};
 use parry2d_f64::math::VectorExt;
@@ -100,7 +101,7 @@ pub(crate) fn common_manifold<M: Default, C: Default + Copy>(
             Pair::DiscConvex(b) => ball_ok(b) && shape_ok(g2, t2),
         };
     if !ok {
-        return Some(refused(manifolds));
+        return Some(guarded(manifolds, false));
     }
     if manifolds.is_empty() {
         manifolds.push(ContactManifold::new());
@@ -117,18 +118,8 @@ pub(crate) fn common_manifold<M: Default, C: Default + Copy>(
             contact_manifold_convex_ball(&pos12.inverse(), g2, b1, None, None, prediction, m, true)
         }
     }
-    if input_guard::AllFinite::all_finite(&manifolds[0]) {
-        Some(Ok(()))
-    } else {
-        Some(refused(manifolds))
-    }
-}
-
-/// The dispatcher's answer to a pair its guards refuse: every manifold cleared, `Unsupported`.
-#[cold]
-fn refused<M, C: Default + Copy>(manifolds: &mut [ContactManifold<M, C>]) -> Result<(), Unsupported> {
-    manifolds.iter_mut().for_each(|m| m.clear());
-    Err(Unsupported)
+    let finite = input_guard::AllFinite::all_finite(&manifolds[0]);
+    Some(guarded(manifolds, finite))
 }
 
 /// parry's `contact_manifold_ball_ball`, bit for bit, with its face id written in place (parry's
