@@ -4,7 +4,9 @@
 //! distance, the
 //! contact manifolds (also on parry's own pairs through the dispatcher), parry's Box2D-style `sweep_time_of_impact` where it applies, how the time
 //! of impact's cost grows with turns before impact, axis ratio and angular velocity (also drawn
-//! to `docs/figures/toi_growth.png`), and a rapier step of the pile.
+//! to `docs/figures/toi_growth.png`), and a rapier step of the pile (with where it goes: the
+//! dispatcher's calls by pair kind, and rapier's stage timers in a build with rapier's
+//! `profiler` feature, `cargo bench --bench ratios --features rapier2d-f64/profiler -- pile`).
 //!
 //! Run with `cargo bench --bench ratios` (all sections, a few minutes on two cores), or name
 //! sections: `cargo bench --bench ratios -- classes distance manifolds parry-pairs sweep growth
@@ -768,6 +770,120 @@ fn pile_table() {
     }
 }
 
+/// Where a step of the pile goes, from rapier's stage timers (a build with rapier's `profiler`
+/// feature: `cargo bench --bench ratios --features rapier2d-f64/profiler -- pile`): the mean
+/// over the first `STEPS` steps of the step, the narrow phase, the solver, the update of the
+/// colliders and the rest, for each narrow phase, with rapier's contact recycling on and off.
+fn pile_stage_table() {
+    use support::pile::Pile;
+    const STEPS: usize = 400;
+    println!("\n### Where a step of the pile goes\n");
+    let mut rows = vec![];
+    for recycling in [true, false] {
+        for exact in [true, false] {
+            let mut best = [f64::INFINITY; 4];
+            for _ in 0..3 {
+                let mut pile = Pile::with(exact, recycling, true).with_counters();
+                let mut sum = [0.0f64; 4];
+                for _ in 0..STEPS {
+                    pile.step();
+                    sum.iter_mut()
+                        .zip(pile.stage_ms())
+                        .for_each(|(s, t)| *s += t / STEPS as f64);
+                }
+                if sum[0] < best[0] {
+                    best = sum;
+                }
+            }
+            rows.push((recycling, exact, best));
+        }
+    }
+    pile_call_table(STEPS);
+    if rows.iter().all(|r| r.2[0] == 0.0) {
+        println!("\n(rapier's stage timers are off: run `cargo bench --bench ratios --features rapier2d-f64/profiler -- pile` to see them.)");
+        return;
+    }
+    println!(
+        "\nrapier's stage timers (`PhysicsPipeline::counters`, rapier's `profiler` feature), mean over the first {STEPS} steps, the best of 3 runs; these runs have the counters on (a statistics pass per step), so their step times are not the table above's.\n"
+    );
+    println!(
+        "| contact recycling | narrow phase | step ms | narrow phase ms | solver ms | collider update ms | rest ms |"
+    );
+    println!("|---|---|---:|---:|---:|---:|---:|");
+    for (recycling, exact, t) in &rows {
+        println!(
+            "| {} | {} | {:.4} | {:.4} | {:.4} | {:.4} | {:.4} |",
+            if *recycling { "on" } else { "off" },
+            if *exact {
+                "SmoothDispatcher, exact shapes"
+            } else {
+                "parry, polygon approximations"
+            },
+            t[0],
+            t[1],
+            t[2],
+            t[3],
+            t[0] - t[1] - t[2] - t[3]
+        );
+    }
+    for pair in rows.chunks(2) {
+        let (ours, parry) = (pair[0].2, pair[1].2);
+        println!(
+            "\nRecycling {}: ratio parry / ours of the step {:.2}, of the narrow phase {:.2}, of the solver {:.2}.",
+            if pair[0].0 { "on" } else { "off" },
+            parry[0] / ours[0],
+            parry[1] / ours[1],
+            parry[2] / ours[2]
+        );
+    }
+}
+
+/// The dispatcher's `contact_manifolds` calls in the pile over its first `steps` steps, by pair
+/// kind: calls per step, time per call inside the simulation (the shapes and manifolds of many
+/// pairs in turn, not one pair's in a loop) and per step, points per call.
+fn pile_call_table(steps: usize) {
+    use std::sync::{Arc, Mutex};
+    use support::pile::Pile;
+    println!(
+        "The dispatcher's `contact_manifolds` calls over the first {steps} steps, by pair kind (one run; a pair of clock readings costs about 50 ns here, so some 25–50 ns of each call's time is the clock's):\n"
+    );
+    println!("| contact recycling | narrow phase | pair kind | calls per step | µs per call | ms per step | points per call |");
+    println!("|---|---|---|---:|---:|---:|---:|");
+    for recycling in [true, false] {
+        for exact in [true, false] {
+            let stats = Arc::new(Mutex::new(Default::default()));
+            let mut pile = Pile::timed(exact, recycling, &stats);
+            for _ in 0..steps {
+                pile.step();
+            }
+            let stats = stats.lock().unwrap_or_else(|e| e.into_inner());
+            let mut total = (0u64, 0.0f64);
+            let label = if exact {
+                "SmoothDispatcher, exact shapes"
+            } else {
+                "parry, polygon approximations"
+            };
+            let on = if recycling { "on" } else { "off" };
+            for (kind, &(calls, seconds, points)) in stats.iter() {
+                total = (total.0 + calls, total.1 + seconds);
+                println!(
+                    "| {on} | {label} | {kind} | {:.1} | {:.2} | {:.4} | {:.2} |",
+                    calls as f64 / steps as f64,
+                    seconds / calls as f64 * 1e6,
+                    seconds / steps as f64 * 1e3,
+                    points as f64 / calls as f64
+                );
+            }
+            println!(
+                "| {on} | {label} | **all** | {:.1} | {:.2} | {:.4} | |",
+                total.0 as f64 / steps as f64,
+                total.1 / total.0.max(1) as f64 * 1e6,
+                total.1 / steps as f64 * 1e3
+            );
+        }
+    }
+}
+
 fn main() {
     // `cargo bench` passes `--bench`; arguments select sections.
     let args: Vec<String> = std::env::args().skip(1).filter(|a| !a.starts_with("--")).collect();
@@ -795,6 +911,7 @@ fn main() {
     }
     if want("pile") {
         pile_table();
+        pile_stage_table();
     }
     // A parry cast that never returned may still be spinning on its thread.
     use std::io::Write;

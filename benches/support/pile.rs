@@ -7,8 +7,18 @@
 use super::resting::pile_polygonal;
 use super::scenes::{insert_pile, pile_bodies, PileShape};
 use super::world::{World, GRAVITY};
+use parry2d_f64::math::{Pose, Real, Vector};
+use parry2d_f64::query::details::NormalConstraints;
+use parry2d_f64::query::{
+    ClosestPoints, Contact, ContactManifold, ContactManifoldsWorkspace, DefaultQueryDispatcher, NonlinearRigidMotion,
+    PersistentQueryDispatcher, QueryDispatcher, ShapeCastHit, ShapeCastOptions, ShapeDistance, ShapeIntersection,
+    Unsupported,
+};
+use parry2d_f64::shape::Shape;
 use rapier2d_f64::prelude::*;
-use smooth_ccd2d::SmoothDispatcher;
+use smooth_ccd2d::{CapsuleEllipse, Ellipse, RoundedPolygon, SmoothDispatcher};
+use std::collections::BTreeMap;
+use std::sync::{Arc, Mutex};
 
 pub use super::scenes::PILE_BODIES as BODIES;
 
@@ -31,6 +41,12 @@ impl Pile {
         } else {
             NarrowPhase::new()
         };
+        Self::build(narrow_phase, exact, recycling)
+    }
+
+    /// The pile in a world with this narrow phase: the exact shapes (`exact`) or parry's
+    /// stand-ins, rapier's contact recycling on or off.
+    fn build(narrow_phase: NarrowPhase, exact: bool, recycling: bool) -> Self {
         let mut world = World::new(narrow_phase);
         world.params.contact_recycling = recycling;
         let bodies = pile_bodies();
@@ -47,6 +63,45 @@ impl Pile {
         self.world.step(GRAVITY, &());
     }
 
+    /// The pile with its dispatcher's `contact_manifolds` calls timed and counted by pair kind
+    /// (into `stats`); the rest as [`Pile::with`] (warm start on).
+    pub fn timed(exact: bool, recycling: bool, stats: &Arc<Mutex<CallStats>>) -> Self {
+        let stats = Arc::clone(stats);
+        let narrow_phase = if exact {
+            NarrowPhase::with_query_dispatcher(Timed {
+                inner: SmoothDispatcher::default(),
+                stats,
+            })
+        } else {
+            NarrowPhase::with_query_dispatcher(Timed {
+                inner: DefaultQueryDispatcher,
+                stats,
+            })
+        };
+        Self::build(narrow_phase, exact, recycling)
+    }
+
+    /// Turns on rapier's counters (`PhysicsPipeline::counters`): its stage timers run only in a
+    /// build with rapier's `profiler` feature, and the counters add a statistics pass to every
+    /// step, so the step-time tables do not use them.
+    pub fn with_counters(mut self) -> Self {
+        self.world.pipeline.counters.enable();
+        self
+    }
+
+    /// The last step's times in ms from rapier's counters: the whole step, the narrow phase
+    /// (every pair's manifolds, this crate's dispatcher or parry's), the solver, and the update
+    /// of the colliders' poses and boxes. Zeros without rapier's `profiler` feature.
+    pub fn stage_ms(&self) -> [f64; 4] {
+        let c = &self.world.pipeline.counters;
+        [
+            c.step_time_ms(),
+            c.cd.narrow_phase_time.time_ms(),
+            c.stages.solver_time.time_ms(),
+            c.stages.update_time.time_ms(),
+        ]
+    }
+
     /// Contact pairs with at least one contact point.
     pub fn touching_pairs(&self) -> usize {
         self.world
@@ -54,5 +109,133 @@ impl Pile {
             .contact_pairs()
             .filter(|p| p.manifolds().iter().any(|m| !m.points.is_empty()))
             .count()
+    }
+}
+
+/// Per pair kind ("a – b", sorted): calls, seconds in `contact_manifolds` and contact points
+/// returned.
+pub type CallStats = BTreeMap<String, (u64, f64, u64)>;
+
+/// A dispatcher that times and counts the `contact_manifolds` calls of the one it wraps (a pair
+/// of clock readings costs about 50 ns, part of it inside the times) and passes everything
+/// else through.
+struct Timed<D> {
+    inner: D,
+    stats: Arc<Mutex<CallStats>>,
+}
+
+/// A shape's name in the call statistics: this crate's shapes by name, parry's by type.
+fn shape_name(g: &dyn Shape) -> String {
+    if g.as_shape::<Ellipse>().is_some() {
+        "Ellipse".into()
+    } else if g.as_shape::<RoundedPolygon>().is_some() {
+        "RoundedPolygon".into()
+    } else if g.as_shape::<CapsuleEllipse>().is_some() {
+        "CapsuleEllipse".into()
+    } else {
+        format!("{:?}", g.shape_type())
+    }
+}
+
+impl<D: QueryDispatcher> QueryDispatcher for Timed<D> {
+    fn intersection_test(
+        &self,
+        pos12: &Pose,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+    ) -> Result<ShapeIntersection, Unsupported> {
+        self.inner.intersection_test(pos12, g1, g2)
+    }
+    fn distance(&self, pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape) -> Result<ShapeDistance, Unsupported> {
+        self.inner.distance(pos12, g1, g2)
+    }
+    fn contact(
+        &self,
+        pos12: &Pose,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+        prediction: Real,
+    ) -> Result<Option<Contact>, Unsupported> {
+        self.inner.contact(pos12, g1, g2, prediction)
+    }
+    fn closest_points(
+        &self,
+        pos12: &Pose,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+        max_dist: Real,
+    ) -> Result<ClosestPoints, Unsupported> {
+        self.inner.closest_points(pos12, g1, g2, max_dist)
+    }
+    fn cast_shapes(
+        &self,
+        pos12: &Pose,
+        local_vel12: Vector,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+        options: ShapeCastOptions,
+    ) -> Result<Option<ShapeCastHit>, Unsupported> {
+        self.inner.cast_shapes(pos12, local_vel12, g1, g2, options)
+    }
+    fn cast_shapes_nonlinear(
+        &self,
+        motion1: &NonlinearRigidMotion,
+        g1: &dyn Shape,
+        motion2: &NonlinearRigidMotion,
+        g2: &dyn Shape,
+        start_time: Real,
+        end_time: Real,
+        stop_at_penetration: bool,
+    ) -> Result<Option<ShapeCastHit>, Unsupported> {
+        self.inner
+            .cast_shapes_nonlinear(motion1, g1, motion2, g2, start_time, end_time, stop_at_penetration)
+    }
+}
+
+impl<M, C, D: PersistentQueryDispatcher<M, C>> PersistentQueryDispatcher<M, C> for Timed<D> {
+    fn contact_manifolds(
+        &self,
+        pos12: &Pose,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+        prediction: Real,
+        manifolds: &mut Vec<ContactManifold<M, C>>,
+        workspace: &mut Option<ContactManifoldsWorkspace>,
+    ) -> Result<(), Unsupported> {
+        let start = std::time::Instant::now();
+        let answer = self
+            .inner
+            .contact_manifolds(pos12, g1, g2, prediction, manifolds, workspace);
+        let seconds = start.elapsed().as_secs_f64();
+        let points: usize = manifolds.iter().map(|m| m.points.len()).sum();
+        let mut names = [shape_name(g1), shape_name(g2)];
+        names.sort();
+        let mut stats = self.stats.lock().unwrap_or_else(|e| e.into_inner());
+        let entry = stats.entry(format!("{} – {}", names[0], names[1])).or_default();
+        entry.0 += 1;
+        entry.1 += seconds;
+        entry.2 += points as u64;
+        answer
+    }
+
+    fn contact_manifold_convex_convex(
+        &self,
+        pos12: &Pose,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+        normal_constraints1: Option<&dyn NormalConstraints>,
+        normal_constraints2: Option<&dyn NormalConstraints>,
+        prediction: Real,
+        manifold: &mut ContactManifold<M, C>,
+    ) -> Result<(), Unsupported> {
+        self.inner.contact_manifold_convex_convex(
+            pos12,
+            g1,
+            g2,
+            normal_constraints1,
+            normal_constraints2,
+            prediction,
+            manifold,
+        )
     }
 }
