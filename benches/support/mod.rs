@@ -6,7 +6,7 @@
 //! ([`parry_pairs`]) and the pile ([`pile`]). The files of
 //! `tests/common` it needs are included as they are (`#[path]`):
 //! the reference, the RNG, the scenario generator, the rapier world and its scenes, the resting
-//! scenes (whose polygonal stand-ins the benches share).
+//! scenes (whose polygonal stand-ins the benches share), the watched dispatcher.
 #![allow(dead_code)]
 
 #[path = "../../tests/common/reference.rs"]
@@ -19,6 +19,8 @@ pub mod rng;
 pub mod scenarios;
 #[path = "../../tests/common/scenes.rs"]
 pub mod scenes;
+#[path = "../../tests/common/watched.rs"]
+pub mod watched;
 #[path = "../../tests/common/world.rs"]
 pub mod world;
 

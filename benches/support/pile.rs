@@ -6,14 +6,9 @@
 
 use super::resting::pile_polygonal;
 use super::scenes::{insert_pile, pile_bodies, PileShape};
+use super::watched::{Watched, Watcher};
 use super::world::{World, GRAVITY};
-use parry2d_f64::math::{Pose, Real, Vector};
-use parry2d_f64::query::details::NormalConstraints;
-use parry2d_f64::query::{
-    ClosestPoints, Contact, ContactManifold, ContactManifoldsWorkspace, DefaultQueryDispatcher, NonlinearRigidMotion,
-    PersistentQueryDispatcher, QueryDispatcher, ShapeCastHit, ShapeCastOptions, ShapeDistance, ShapeIntersection,
-    Unsupported,
-};
+use parry2d_f64::query::DefaultQueryDispatcher;
 use parry2d_f64::shape::Shape;
 use rapier2d_f64::prelude::*;
 use smooth_ccd2d::{CapsuleEllipse, Ellipse, RoundedPolygon, SmoothDispatcher};
@@ -66,16 +61,16 @@ impl Pile {
     /// The pile with its dispatcher's `contact_manifolds` calls timed and counted by pair kind
     /// (into `stats`); the rest as [`Pile::with`] (warm start on).
     pub fn timed(exact: bool, recycling: bool, stats: &Arc<Mutex<CallStats>>) -> Self {
-        let stats = Arc::clone(stats);
+        let watcher = CallTimes(Arc::clone(stats));
         let narrow_phase = if exact {
-            NarrowPhase::with_query_dispatcher(Timed {
+            NarrowPhase::with_query_dispatcher(Watched {
                 inner: SmoothDispatcher::default(),
-                stats,
+                watcher,
             })
         } else {
-            NarrowPhase::with_query_dispatcher(Timed {
+            NarrowPhase::with_query_dispatcher(Watched {
                 inner: DefaultQueryDispatcher,
-                stats,
+                watcher,
             })
         };
         Self::build(narrow_phase, exact, recycling)
@@ -116,13 +111,9 @@ impl Pile {
 /// returned.
 pub type CallStats = BTreeMap<String, (u64, f64, u64)>;
 
-/// A dispatcher that times and counts the `contact_manifolds` calls of the one it wraps (a pair
-/// of clock readings costs about 50 ns, part of it inside the times) and passes everything
-/// else through.
-struct Timed<D> {
-    inner: D,
-    stats: Arc<Mutex<CallStats>>,
-}
+/// The watcher of [`Pile::timed`]: each `contact_manifolds` call's time and points, added up by
+/// pair kind (a pair of clock readings costs about 50 ns, part of it inside the times).
+struct CallTimes(Arc<Mutex<CallStats>>);
 
 /// A shape's name in the call statistics: this crate's shapes by name, parry's by type.
 fn shape_name(g: &dyn Shape) -> String {
@@ -137,105 +128,14 @@ fn shape_name(g: &dyn Shape) -> String {
     }
 }
 
-impl<D: QueryDispatcher> QueryDispatcher for Timed<D> {
-    fn intersection_test(
-        &self,
-        pos12: &Pose,
-        g1: &dyn Shape,
-        g2: &dyn Shape,
-    ) -> Result<ShapeIntersection, Unsupported> {
-        self.inner.intersection_test(pos12, g1, g2)
-    }
-    fn distance(&self, pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape) -> Result<ShapeDistance, Unsupported> {
-        self.inner.distance(pos12, g1, g2)
-    }
-    fn contact(
-        &self,
-        pos12: &Pose,
-        g1: &dyn Shape,
-        g2: &dyn Shape,
-        prediction: Real,
-    ) -> Result<Option<Contact>, Unsupported> {
-        self.inner.contact(pos12, g1, g2, prediction)
-    }
-    fn closest_points(
-        &self,
-        pos12: &Pose,
-        g1: &dyn Shape,
-        g2: &dyn Shape,
-        max_dist: Real,
-    ) -> Result<ClosestPoints, Unsupported> {
-        self.inner.closest_points(pos12, g1, g2, max_dist)
-    }
-    fn cast_shapes(
-        &self,
-        pos12: &Pose,
-        local_vel12: Vector,
-        g1: &dyn Shape,
-        g2: &dyn Shape,
-        options: ShapeCastOptions,
-    ) -> Result<Option<ShapeCastHit>, Unsupported> {
-        self.inner.cast_shapes(pos12, local_vel12, g1, g2, options)
-    }
-    fn cast_shapes_nonlinear(
-        &self,
-        motion1: &NonlinearRigidMotion,
-        g1: &dyn Shape,
-        motion2: &NonlinearRigidMotion,
-        g2: &dyn Shape,
-        start_time: Real,
-        end_time: Real,
-        stop_at_penetration: bool,
-    ) -> Result<Option<ShapeCastHit>, Unsupported> {
-        self.inner
-            .cast_shapes_nonlinear(motion1, g1, motion2, g2, start_time, end_time, stop_at_penetration)
-    }
-}
-
-impl<M, C, D: PersistentQueryDispatcher<M, C>> PersistentQueryDispatcher<M, C> for Timed<D> {
-    fn contact_manifolds(
-        &self,
-        pos12: &Pose,
-        g1: &dyn Shape,
-        g2: &dyn Shape,
-        prediction: Real,
-        manifolds: &mut Vec<ContactManifold<M, C>>,
-        workspace: &mut Option<ContactManifoldsWorkspace>,
-    ) -> Result<(), Unsupported> {
-        let start = std::time::Instant::now();
-        let answer = self
-            .inner
-            .contact_manifolds(pos12, g1, g2, prediction, manifolds, workspace);
-        let seconds = start.elapsed().as_secs_f64();
-        let points: usize = manifolds.iter().map(|m| m.points.len()).sum();
+impl Watcher for CallTimes {
+    fn manifolds(&self, g1: &dyn Shape, g2: &dyn Shape, seconds: f64, points: usize) {
         let mut names = [shape_name(g1), shape_name(g2)];
         names.sort();
-        let mut stats = self.stats.lock().unwrap_or_else(|e| e.into_inner());
+        let mut stats = self.0.lock().unwrap_or_else(|e| e.into_inner());
         let entry = stats.entry(format!("{} – {}", names[0], names[1])).or_default();
         entry.0 += 1;
         entry.1 += seconds;
         entry.2 += points as u64;
-        answer
-    }
-
-    fn contact_manifold_convex_convex(
-        &self,
-        pos12: &Pose,
-        g1: &dyn Shape,
-        g2: &dyn Shape,
-        normal_constraints1: Option<&dyn NormalConstraints>,
-        normal_constraints2: Option<&dyn NormalConstraints>,
-        prediction: Real,
-        manifold: &mut ContactManifold<M, C>,
-    ) -> Result<(), Unsupported> {
-        self.inner.contact_manifold_convex_convex(
-            pos12,
-            g1,
-            g2,
-            normal_constraints1,
-            normal_constraints2,
-            prediction,
-            manifold,
-        )
     }
 }

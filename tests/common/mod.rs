@@ -7,7 +7,9 @@
 //! * [`world`]: a rapier world to step, and a hash of its state;
 //! * [`scenes`]: the rapier scenes (the mixed pile, the box pile, the wall shots);
 //! * [`resting`]: resting quality — two stacks and a slope, exact and parry variants, the pile at rest;
-//! * [`appendix_d`]: the specification's Appendix D scene.
+//! * [`appendix_d`]: the specification's Appendix D scene;
+//! * [`watched`]: a dispatcher that passes every query on and reports it (the threads that call
+//!   it, the time of each manifold query).
 //!
 //! `tests/reliability` (the fuzz generator of `tests/adversarial.rs`, `tests/golden.rs` and
 //! `tests/threads.rs`) draws from [`rng`] too.
@@ -19,6 +21,7 @@ pub mod resting;
 pub mod rng;
 pub mod scenarios;
 pub mod scenes;
+pub mod watched;
 pub mod world;
 
 #[allow(unused_imports)]

@@ -9,15 +9,8 @@
 mod common;
 
 use common::scenes::{mixed_pile, MIXED_PILE_BODIES};
+use common::watched::{Watched, Watcher};
 use common::world::{state_hash, World, GRAVITY};
-use parry2d_f64::math::{Pose, Real};
-use parry2d_f64::query::details::{NormalConstraints, ShapeCastOptions};
-use parry2d_f64::query::{
-    ClosestPoints, Contact, ContactManifold, ContactManifoldsWorkspace, NonlinearRigidMotion,
-    PersistentQueryDispatcher, QueryDispatcher, ShapeCastHit, ShapeDistance, ShapeIntersection, Unsupported,
-};
-use parry2d_f64::shape::Shape;
-use rapier2d_f64::geometry::{ContactData, ContactManifoldData};
 use rapier2d_f64::prelude::*;
 use smooth_ccd2d::SmoothDispatcher;
 use std::collections::BTreeMap;
@@ -25,114 +18,13 @@ use std::collections::HashSet;
 use std::sync::{Arc, Mutex};
 use std::thread::ThreadId;
 
-/// `SmoothDispatcher` recording the threads that call it (to show that rapier's parallel narrow
-/// phase and CCD really call it from several threads at once).
-struct Spy {
-    inner: SmoothDispatcher,
-    threads: Arc<Mutex<HashSet<ThreadId>>>,
-}
+/// The threads that call the watched dispatcher (to show that rapier's parallel narrow phase
+/// and CCD really call `SmoothDispatcher` from several threads at once).
+struct Threads(Arc<Mutex<HashSet<ThreadId>>>);
 
-impl Spy {
-    fn seen(&self) {
-        self.threads.lock().unwrap().insert(std::thread::current().id());
-    }
-}
-
-impl QueryDispatcher for Spy {
-    fn intersection_test(
-        &self,
-        pos12: &Pose,
-        g1: &dyn Shape,
-        g2: &dyn Shape,
-    ) -> Result<ShapeIntersection, Unsupported> {
-        self.seen();
-        self.inner.intersection_test(pos12, g1, g2)
-    }
-    fn distance(&self, pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape) -> Result<ShapeDistance, Unsupported> {
-        self.seen();
-        self.inner.distance(pos12, g1, g2)
-    }
-    fn contact(
-        &self,
-        pos12: &Pose,
-        g1: &dyn Shape,
-        g2: &dyn Shape,
-        prediction: Real,
-    ) -> Result<Option<Contact>, Unsupported> {
-        self.seen();
-        self.inner.contact(pos12, g1, g2, prediction)
-    }
-    fn closest_points(
-        &self,
-        pos12: &Pose,
-        g1: &dyn Shape,
-        g2: &dyn Shape,
-        max_dist: Real,
-    ) -> Result<ClosestPoints, Unsupported> {
-        self.seen();
-        self.inner.closest_points(pos12, g1, g2, max_dist)
-    }
-    fn cast_shapes(
-        &self,
-        pos12: &Pose,
-        local_vel12: Vector,
-        g1: &dyn Shape,
-        g2: &dyn Shape,
-        options: ShapeCastOptions,
-    ) -> Result<Option<ShapeCastHit>, Unsupported> {
-        self.seen();
-        self.inner.cast_shapes(pos12, local_vel12, g1, g2, options)
-    }
-    fn cast_shapes_nonlinear(
-        &self,
-        motion1: &NonlinearRigidMotion,
-        g1: &dyn Shape,
-        motion2: &NonlinearRigidMotion,
-        g2: &dyn Shape,
-        start_time: Real,
-        end_time: Real,
-        stop_at_penetration: bool,
-    ) -> Result<Option<ShapeCastHit>, Unsupported> {
-        self.seen();
-        self.inner
-            .cast_shapes_nonlinear(motion1, g1, motion2, g2, start_time, end_time, stop_at_penetration)
-    }
-}
-
-impl PersistentQueryDispatcher<ContactManifoldData, ContactData> for Spy {
-    fn contact_manifolds(
-        &self,
-        pos12: &Pose,
-        g1: &dyn Shape,
-        g2: &dyn Shape,
-        prediction: Real,
-        manifolds: &mut Vec<ContactManifold<ContactManifoldData, ContactData>>,
-        workspace: &mut Option<ContactManifoldsWorkspace>,
-    ) -> Result<(), Unsupported> {
-        self.seen();
-        self.inner
-            .contact_manifolds(pos12, g1, g2, prediction, manifolds, workspace)
-    }
-    fn contact_manifold_convex_convex(
-        &self,
-        pos12: &Pose,
-        g1: &dyn Shape,
-        g2: &dyn Shape,
-        normal_constraints1: Option<&dyn NormalConstraints>,
-        normal_constraints2: Option<&dyn NormalConstraints>,
-        prediction: Real,
-        manifold: &mut ContactManifold<ContactManifoldData, ContactData>,
-    ) -> Result<(), Unsupported> {
-        self.seen();
-        self.inner.contact_manifold_convex_convex(
-            pos12,
-            g1,
-            g2,
-            normal_constraints1,
-            normal_constraints2,
-            prediction,
-            manifold,
-        )
+impl Watcher for Threads {
+    fn query(&self) {
+        self.0.lock().unwrap().insert(std::thread::current().id());
     }
 }
 
@@ -147,9 +39,9 @@ impl Scene {
     /// `threads` workers.
     fn new(threads: usize) -> Self {
         let seen = Arc::new(Mutex::new(HashSet::new()));
-        let spy = Spy {
+        let spy = Watched {
             inner: SmoothDispatcher::default(),
-            threads: seen.clone(),
+            watcher: Threads(seen.clone()),
         };
         let mut world = World::new(NarrowPhase::with_query_dispatcher(spy));
         world.pipeline.configure_thread_pool(threads).expect("thread pool");

@@ -1,0 +1,133 @@
+//! A dispatcher that passes every query on to the one it wraps and tells a [`Watcher`] about
+//! it: which threads call rapier's narrow phase (`crates/parallel-tests`), how long each
+//! `contact_manifolds` call takes by pair kind (the pile benchmark, `benches/support/pile.rs`).
+#![allow(dead_code)]
+
+use parry2d_f64::math::{Pose, Real, Vector};
+use parry2d_f64::query::details::NormalConstraints;
+use parry2d_f64::query::{
+    ClosestPoints, Contact, ContactManifold, ContactManifoldsWorkspace, NonlinearRigidMotion,
+    PersistentQueryDispatcher, QueryDispatcher, ShapeCastHit, ShapeCastOptions, ShapeDistance, ShapeIntersection,
+    Unsupported,
+};
+use parry2d_f64::shape::Shape;
+
+/// What a [`Watched`] dispatcher reports.
+pub trait Watcher: Send + Sync {
+    /// Called before every query.
+    fn query(&self) {}
+    /// Called after every `contact_manifolds` call: its shapes, the seconds it took (one clock
+    /// reading before, one after) and the contact points it returned.
+    fn manifolds(&self, _g1: &dyn Shape, _g2: &dyn Shape, _seconds: f64, _points: usize) {}
+}
+
+/// The dispatcher `inner`, watched by `watcher`; its answers are `inner`'s.
+pub struct Watched<D, W> {
+    pub inner: D,
+    pub watcher: W,
+}
+
+impl<D: QueryDispatcher, W: Watcher> QueryDispatcher for Watched<D, W> {
+    fn intersection_test(
+        &self,
+        pos12: &Pose,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+    ) -> Result<ShapeIntersection, Unsupported> {
+        self.watcher.query();
+        self.inner.intersection_test(pos12, g1, g2)
+    }
+    fn distance(&self, pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape) -> Result<ShapeDistance, Unsupported> {
+        self.watcher.query();
+        self.inner.distance(pos12, g1, g2)
+    }
+    fn contact(
+        &self,
+        pos12: &Pose,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+        prediction: Real,
+    ) -> Result<Option<Contact>, Unsupported> {
+        self.watcher.query();
+        self.inner.contact(pos12, g1, g2, prediction)
+    }
+    fn closest_points(
+        &self,
+        pos12: &Pose,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+        max_dist: Real,
+    ) -> Result<ClosestPoints, Unsupported> {
+        self.watcher.query();
+        self.inner.closest_points(pos12, g1, g2, max_dist)
+    }
+    fn cast_shapes(
+        &self,
+        pos12: &Pose,
+        local_vel12: Vector,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+        options: ShapeCastOptions,
+    ) -> Result<Option<ShapeCastHit>, Unsupported> {
+        self.watcher.query();
+        self.inner.cast_shapes(pos12, local_vel12, g1, g2, options)
+    }
+    fn cast_shapes_nonlinear(
+        &self,
+        motion1: &NonlinearRigidMotion,
+        g1: &dyn Shape,
+        motion2: &NonlinearRigidMotion,
+        g2: &dyn Shape,
+        start_time: Real,
+        end_time: Real,
+        stop_at_penetration: bool,
+    ) -> Result<Option<ShapeCastHit>, Unsupported> {
+        self.watcher.query();
+        self.inner
+            .cast_shapes_nonlinear(motion1, g1, motion2, g2, start_time, end_time, stop_at_penetration)
+    }
+}
+
+impl<M, C, D: PersistentQueryDispatcher<M, C>, W: Watcher> PersistentQueryDispatcher<M, C> for Watched<D, W> {
+    fn contact_manifolds(
+        &self,
+        pos12: &Pose,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+        prediction: Real,
+        manifolds: &mut Vec<ContactManifold<M, C>>,
+        workspace: &mut Option<ContactManifoldsWorkspace>,
+    ) -> Result<(), Unsupported> {
+        self.watcher.query();
+        let start = std::time::Instant::now();
+        let answer = self
+            .inner
+            .contact_manifolds(pos12, g1, g2, prediction, manifolds, workspace);
+        let seconds = start.elapsed().as_secs_f64();
+        let points = manifolds.iter().map(|m| m.points.len()).sum();
+        self.watcher.manifolds(g1, g2, seconds, points);
+        answer
+    }
+
+    fn contact_manifold_convex_convex(
+        &self,
+        pos12: &Pose,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+        normal_constraints1: Option<&dyn NormalConstraints>,
+        normal_constraints2: Option<&dyn NormalConstraints>,
+        prediction: Real,
+        manifold: &mut ContactManifold<M, C>,
+    ) -> Result<(), Unsupported> {
+        self.watcher.query();
+        self.inner.contact_manifold_convex_convex(
+            pos12,
+            g1,
+            g2,
+            normal_constraints1,
+            normal_constraints2,
+            prediction,
+            manifold,
+        )
+    }
+}
