@@ -275,7 +275,11 @@ struct Face {
     fid: PackedFeatureId,
 }
 
-/// parry's `Cuboid::vertex_feature_id`: the signs of the vertex's coordinates, as two bits.
+/// parry's `Cuboid::vertex_feature_id`, bit for bit. It was meant to read the signs of the
+/// vertex's coordinates (bit 31 of an f32); on an f64 it reads bit 31 of each coordinate, a
+/// mantissa bit, so a box's four corners often get the same code (for half extents 0.5 × 0.3 all four
+/// are 0), and so do its faces. Kept as parry has it: these are parry's own pairs, answered to the
+/// bit (`the_box_manifold_is_parrys_to_the_bit`).
 #[inline]
 fn vertex_code(v: Vector) -> u32 {
     (((v.x.to_bits() >> 31) & 0b001) | ((v.y.to_bits() >> 30) & 0b010)) as u32
