@@ -770,6 +770,49 @@ fn pile_table() {
     }
 }
 
+/// The pile's step with the narrow phase's answers handed back from a recording (see
+/// `support::replay`): what the step would cost were this crate's dispatcher free, against
+/// parry's pile as in [`pile_table`].
+fn pile_bound_table() {
+    use std::time::Instant;
+    use support::pile::Pile;
+    use support::replay::replayed_pile;
+    const STEPS: usize = 400;
+    const RUNS: usize = 3;
+    println!("\n## rapier: the pile's step with a free narrow phase\n");
+    println!(
+        "The exact pile's first {STEPS} steps run with `SmoothDispatcher` (the best of {RUNS} runs), once more with its answers recorded, and then {RUNS} times with the recorded manifolds handed back in call order (the run is deterministic: every replay must end in the recorded state, bit for bit); parry's pile as in the table above, the best of {RUNS} runs. The replayed step is what rapier itself spends on this pile's contacts, the bound on the step of any narrow phase giving these answers.\n"
+    );
+    println!("| contact recycling | exact pile, mean step ms | exact pile replayed, mean step ms | replays end in the recorded state | parry's pile, mean step ms | ratio parry / exact | ratio parry / replayed (the bound) |");
+    println!("|---|---:|---:|---|---:|---:|---:|");
+    for recycling in [true, false] {
+        let (replayed, same) = replayed_pile(recycling, STEPS, RUNS);
+        let mean_step = |exact: bool| {
+            let mut best = f64::INFINITY;
+            for _ in 0..RUNS {
+                let mut pile = Pile::with(exact, recycling, true);
+                let start = Instant::now();
+                for _ in 0..STEPS {
+                    pile.step();
+                }
+                best = best.min(start.elapsed().as_secs_f64() / STEPS as f64);
+            }
+            best
+        };
+        let (ours, parry) = (mean_step(true), mean_step(false));
+        println!(
+            "| {} | {:.3} | {:.3} | {} | {:.3} | {:.2} | {:.2} |",
+            if recycling { "on" } else { "off" },
+            ours * 1e3,
+            replayed * 1e3,
+            if same { "yes" } else { "**no**" },
+            parry * 1e3,
+            parry / ours,
+            parry / replayed
+        );
+    }
+}
+
 /// Where a step of the pile goes, from rapier's stage timers (a build with rapier's `profiler`
 /// feature: `cargo bench --bench ratios --features rapier2d-f64/profiler -- pile`): the mean
 /// over the first `STEPS` steps of the step, the narrow phase, the solver, the update of the
@@ -915,6 +958,9 @@ fn main() {
     if want("pile") {
         pile_table();
         pile_stage_table();
+    }
+    if want("pile-bound") {
+        pile_bound_table();
     }
     // A parry cast that never returned may still be spinning on its thread.
     use std::io::Write;

@@ -8,7 +8,7 @@ use super::resting::pile_polygonal;
 use super::scenes::{insert_pile, pile_bodies, PileShape};
 use super::watched::{Watched, Watcher};
 use super::world::{World, GRAVITY};
-use parry2d_f64::query::DefaultQueryDispatcher;
+use parry2d_f64::query::{DefaultQueryDispatcher, PersistentQueryDispatcher};
 use parry2d_f64::shape::Shape;
 use rapier2d_f64::prelude::*;
 use smooth_ccd2d::{CapsuleEllipse, Ellipse, RoundedPolygon, SmoothDispatcher};
@@ -20,6 +20,7 @@ pub use super::scenes::PILE_BODIES as BODIES;
 /// A rapier world stepping the pile.
 pub struct Pile {
     world: World,
+    bodies: Vec<RigidBodyHandle>,
 }
 
 impl Pile {
@@ -45,12 +46,30 @@ impl Pile {
         let mut world = World::new(narrow_phase);
         world.params.contact_recycling = recycling;
         let bodies = pile_bodies();
-        if exact {
-            insert_pile(&mut world, &bodies, PileShape::shared);
+        let bodies = if exact {
+            insert_pile(&mut world, &bodies, PileShape::shared)
         } else {
-            insert_pile(&mut world, &bodies, pile_polygonal);
-        }
-        Pile { world }
+            insert_pile(&mut world, &bodies, pile_polygonal)
+        };
+        Pile { world, bodies }
+    }
+
+    /// The exact pile with `dispatcher` as rapier's narrow phase, contact recycling on or off.
+    pub fn on<D>(dispatcher: D, recycling: bool) -> Self
+    where
+        D: PersistentQueryDispatcher<ContactManifoldData, ContactData> + 'static,
+    {
+        Self::build(NarrowPhase::with_query_dispatcher(dispatcher), true, recycling)
+    }
+
+    /// The rapier world.
+    pub fn world(&self) -> &World {
+        &self.world
+    }
+
+    /// The pile's bodies (the walls left out), in the order they were made.
+    pub fn bodies(&self) -> Vec<RigidBodyHandle> {
+        self.bodies.clone()
     }
 
     /// One rapier step (1/60 s).
