@@ -781,9 +781,9 @@ fn pile_bound_table() {
     const RUNS: usize = 3;
     println!("\n## rapier: the pile's step with a free narrow phase\n");
     println!(
-        "The exact pile's first {STEPS} steps run with `SmoothDispatcher` (the best of {RUNS} runs), once more with its answers recorded, and then {RUNS} times with the recorded manifolds handed back in call order (the run is deterministic: every replay must end in the recorded state, bit for bit); parry's pile as in the table above, the best of {RUNS} runs. The replayed step is what rapier itself spends on this pile's contacts, the bound on the step of any narrow phase giving these answers.\n"
+        "The exact pile's first {STEPS} steps run with `SmoothDispatcher` (the best of {RUNS} runs), once more with its answers recorded (`contact_manifolds`, and `cast_shapes_nonlinear` for rapier's CCD), and then {RUNS} times with the recorded answers handed back in call order (the run is deterministic: the recording and every replay must end in the plain run's state, bit for bit); parry's pile as in the table above, the best of {RUNS} runs. The replayed step is what rapier spends on this pile besides the dispatcher, the bound on the step of any dispatcher giving these answers.\n"
     );
-    println!("| contact recycling | exact pile, mean step ms | exact pile replayed, mean step ms | replays end in the recorded state | parry's pile, mean step ms | ratio parry / exact | ratio parry / replayed (the bound) |");
+    println!("| contact recycling | exact pile, mean step ms | exact pile replayed, mean step ms | replays end in the plain run's state | parry's pile, mean step ms | ratio parry / exact | ratio parry / replayed (the bound) |");
     println!("|---|---:|---:|---|---:|---:|---:|");
     for recycling in [true, false] {
         let (replayed, same) = replayed_pile(recycling, STEPS, RUNS);
@@ -886,23 +886,25 @@ fn pile_stage_table() {
 
 /// The dispatcher's `contact_manifolds` calls in the pile over its first `steps` steps, by pair
 /// kind: calls per step, time per call inside the simulation (the shapes and manifolds of many
-/// pairs in turn, not one pair's in a loop) and per step, points per call.
+/// pairs in turn, not one pair's in a loop) and per step, points per call; then rapier's CCD
+/// casts (`cast_shapes_nonlinear`), their number, mean and longest time.
 fn pile_call_table(steps: usize) {
     use std::sync::{Arc, Mutex};
-    use support::pile::Pile;
+    use support::pile::{CallStats, Pile};
     println!(
         "The dispatcher's `contact_manifolds` calls over the first {steps} steps, by pair kind (one run; a pair of clock readings costs about 50 ns here, so some 25–50 ns of each call's time is the clock's):\n"
     );
     println!("| contact recycling | narrow phase | pair kind | calls per step | µs per call | ms per step | points per call |");
     println!("|---|---|---|---:|---:|---:|---:|");
+    let mut runs: Vec<(String, CallStats)> = Vec::new();
     for recycling in [true, false] {
         for exact in [true, false] {
-            let stats = Arc::new(Mutex::new(Default::default()));
+            let stats = Arc::new(Mutex::new(CallStats::default()));
             let mut pile = Pile::timed(exact, recycling, &stats);
             for _ in 0..steps {
                 pile.step();
             }
-            let stats = stats.lock().unwrap_or_else(|e| e.into_inner());
+            let stats = std::mem::take(&mut *stats.lock().unwrap_or_else(|e| e.into_inner()));
             let mut total = (0u64, 0.0f64);
             let label = if exact {
                 "SmoothDispatcher, exact shapes"
@@ -910,7 +912,7 @@ fn pile_call_table(steps: usize) {
                 "parry, polygon approximations"
             };
             let on = if recycling { "on" } else { "off" };
-            for (kind, &(calls, seconds, points)) in stats.iter() {
+            for (kind, &(calls, seconds, points)) in stats.manifolds.iter() {
                 total = (total.0 + calls, total.1 + seconds);
                 println!(
                     "| {on} | {label} | {kind} | {:.1} | {:.2} | {:.4} | {:.2} |",
@@ -925,6 +927,22 @@ fn pile_call_table(steps: usize) {
                 total.0 as f64 / steps as f64,
                 total.1 / total.0.max(1) as f64 * 1e6,
                 total.1 / steps as f64 * 1e3
+            );
+            runs.push((format!("| {on} | {label} |"), stats));
+        }
+    }
+    println!(
+        "\nrapier's CCD casts (`cast_shapes_nonlinear`: rapier sweeps the pile's fast bodies whether or not their CCD flag is set) in the same runs:\n"
+    );
+    println!("| contact recycling | narrow phase | pair kind | casts | mean µs | longest µs | ms per step |");
+    println!("|---|---|---|---:|---:|---:|---:|");
+    for (row, stats) in &runs {
+        for (kind, &(casts, seconds, longest)) in stats.casts.iter() {
+            println!(
+                "{row} {kind} | {casts} | {:.2} | {:.2} | {:.4} |",
+                seconds / casts as f64 * 1e6,
+                longest * 1e6,
+                seconds / steps as f64 * 1e3
             );
         }
     }

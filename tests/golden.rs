@@ -68,7 +68,13 @@ const FUZZ_CASES: u64 = 40_000;
 /// signed distances to 6e-15 of the size on 200,000 random pairs, witnesses on thin ellipses within
 /// 3e-13 of the size; `coincident`, `concentric`, `grazing` and `touching-at-t0` kept their
 /// digests, the rapier state changed. (Those arcs coming last in the walk, skipped by a lower
-/// bound, kept every bit.)
+/// bound, kept every bit.) Last re-recorded when the rapier rule's search for a deepening
+/// contact (`dispatcher::start_contact`, up to 64 signed distances per cast) took the signed
+/// distance from the exact contact query instead of the route's own distance (the same
+/// quantity; a CapsuleEllipse resting on a box cast in 9 µs instead of 240): every class but
+/// `wild` kept its digest, and so did the rapier state; `wild` changed in 5 of its cases, each
+/// a shape of size 1e20 or 1e160 against one of 1e-7 to 1e4, where the rounding of a signed
+/// distance (1e4 and more) is larger than the small shape (0x6E6F_19C4_08B0_8BA7 before).
 const FUZZ_DIGESTS: [(&str, u64); 9] = [
     ("coincident", 0x391FFDFFB7B3FB19),
     ("concentric", 0xF50B9F1647698F73),
@@ -78,7 +84,7 @@ const FUZZ_DIGESTS: [(&str, u64); 9] = [
     ("random", 0x83FED9F73B581212),
     ("thin-ellipse", 0x8FDB6BE58D03ADA1),
     ("touching-at-t0", 0x992CED4BA058126E),
-    ("wild", 0x6E6F19C408B08BA7),
+    ("wild", 0x7DCC7D7B525EA34A),
 ];
 
 /// Final-state hash of the rapier scene (re-recorded with issue 17: the CCD casts between its
@@ -89,8 +95,13 @@ const FUZZ_DIGESTS: [(&str, u64); 9] = [
 /// 0x8567_A3FB_7AF1_1BF1 before the feet's Newton steps took fewer divisions, 0x52B0_3332_ACF9_FC31
 /// before the warm-started descent between two ellipses, 0xE211_0D00_2F26_00C7 before the tight
 /// posed boxes of ellipses and rounded polygons, 0x09FD_5E9D_ABB4_B5A2 before the search between
-/// two ellipse pieces on a part of the circle changed as above).
-const RAPIER_STATE: u64 = 0x973C_2FA2_DB3A_D289;
+/// two ellipse pieces on a part of the circle changed as above, 0x973C_2FA2_DB3A_D289 before a
+/// pair's manifold was left empty at once when the previous normal — or, cold, the line of the
+/// centres — proves the pair further apart than the prediction (`query::contact::separation`):
+/// every answer is the same, the fuzz batch kept its digests, but such a manifold keeps the
+/// normal it had, which the next full query starts its search between two ellipses from, and
+/// that search's last bits depend on its start).
+const RAPIER_STATE: u64 = 0x1819_22E5_503F_AC1D;
 
 /// FNV-1a of a sequence of words.
 fn fnv(words: impl IntoIterator<Item = u64>) -> u64 {

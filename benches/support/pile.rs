@@ -126,12 +126,18 @@ impl Pile {
     }
 }
 
-/// Per pair kind ("a – b", sorted): calls, seconds in `contact_manifolds` and contact points
-/// returned.
-pub type CallStats = BTreeMap<String, (u64, f64, u64)>;
+/// The dispatcher's calls in a run, per pair kind ("a – b", sorted).
+#[derive(Default)]
+pub struct CallStats {
+    /// `contact_manifolds`: calls, seconds in them and contact points returned.
+    pub manifolds: BTreeMap<String, (u64, f64, u64)>,
+    /// `cast_shapes_nonlinear` (rapier's CCD): casts, seconds in them and the longest cast's.
+    pub casts: BTreeMap<String, (u64, f64, f64)>,
+}
 
-/// The watcher of [`Pile::timed`]: each `contact_manifolds` call's time and points, added up by
-/// pair kind (a pair of clock readings costs about 50 ns, part of it inside the times).
+/// The watcher of [`Pile::timed`]: each `contact_manifolds` call's time and points and each
+/// cast's time, added up by pair kind (a pair of clock readings costs about 50 ns, part of it
+/// inside the times).
 struct CallTimes(Arc<Mutex<CallStats>>);
 
 /// A shape's name in the call statistics: this crate's shapes by name, parry's by type.
@@ -147,14 +153,29 @@ fn shape_name(g: &dyn Shape) -> String {
     }
 }
 
+/// "a – b" with the two shapes' names sorted.
+fn pair_kind(g1: &dyn Shape, g2: &dyn Shape) -> String {
+    let mut names = [shape_name(g1), shape_name(g2)];
+    names.sort();
+    format!("{} – {}", names[0], names[1])
+}
+
 impl Watcher for CallTimes {
     fn manifolds(&self, g1: &dyn Shape, g2: &dyn Shape, seconds: f64, points: usize) {
-        let mut names = [shape_name(g1), shape_name(g2)];
-        names.sort();
+        let kind = pair_kind(g1, g2);
         let mut stats = self.0.lock().unwrap_or_else(|e| e.into_inner());
-        let entry = stats.entry(format!("{} – {}", names[0], names[1])).or_default();
+        let entry = stats.manifolds.entry(kind).or_default();
         entry.0 += 1;
         entry.1 += seconds;
         entry.2 += points as u64;
+    }
+
+    fn cast(&self, g1: &dyn Shape, g2: &dyn Shape, seconds: f64) {
+        let kind = pair_kind(g1, g2);
+        let mut stats = self.0.lock().unwrap_or_else(|e| e.into_inner());
+        let entry = stats.casts.entry(kind).or_default();
+        entry.0 += 1;
+        entry.1 += seconds;
+        entry.2 = entry.2.max(seconds);
     }
 }

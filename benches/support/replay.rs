@@ -1,9 +1,10 @@
-//! The pile with its narrow phase made almost free: a run records every `contact_manifolds`
-//! answer of this crate's dispatcher, in call order; a second run of the same (deterministic)
-//! pile hands the recorded manifolds back instead of computing them. What the replayed run still
-//! costs per step is rapier's own work on these manifolds (its narrow-phase bookkeeping, the
-//! solver, the broad phase, the islands), so the replayed step bounds what any dispatcher could
-//! reach on this pile's physics.
+//! The pile with its dispatcher made almost free: a run records every `contact_manifolds` and
+//! `cast_shapes_nonlinear` answer of this crate's dispatcher (rapier's narrow phase and its CCD,
+//! which sweeps the pile's fast bodies whether or not their CCD flag is set), in call order; later
+//! runs of the same (deterministic) pile hand the recorded answers back instead of computing
+//! them. What a replayed run still costs per step is rapier's own work (its narrow-phase
+//! bookkeeping, the solver, the broad phase, the islands), so the replayed step bounds what any
+//! dispatcher could reach on this pile's physics.
 
 use super::pile::Pile;
 use super::world::state_hash;
@@ -18,17 +19,22 @@ use smooth_ccd2d::SmoothDispatcher;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex};
 
-/// Every `contact_manifolds` answer of a run, in call order.
-type Recording = Vec<Vec<ContactManifold>>;
+/// The answers of a run, each kind in call order.
+#[derive(Default)]
+pub struct Recording {
+    manifolds: Vec<Vec<ContactManifold>>,
+    casts: Vec<Result<Option<ShapeCastHit>, Unsupported>>,
+}
 
 /// The dispatcher of a recording run ([`SmoothDispatcher`], its manifolds logged after each
 /// call) or of a replay (the logged manifolds handed back in order).
 pub struct Replay {
     inner: SmoothDispatcher,
     log: Arc<Mutex<Recording>>,
-    /// `Some` in a replay: the recording, read from the call counter on.
+    /// `Some` in a replay: the recording, read from the call counters on.
     replay: Option<Arc<Recording>>,
     next: AtomicUsize,
+    next_cast: AtomicUsize,
 }
 
 impl Replay {
@@ -39,6 +45,7 @@ impl Replay {
             log: Arc::clone(log),
             replay: None,
             next: AtomicUsize::new(0),
+            next_cast: AtomicUsize::new(0),
         }
     }
 
@@ -49,46 +56,72 @@ impl Replay {
             log: Arc::default(),
             replay: Some(Arc::clone(recording)),
             next: AtomicUsize::new(0),
+            next_cast: AtomicUsize::new(0),
         }
     }
 }
 
-/// Only `contact_manifolds` is answered: the pile's rapier world asks nothing else of its
-/// narrow phase (no CCD, no intersection pairs).
+/// Every query but the manifolds and the nonlinear casts is [`SmoothDispatcher`]'s, computed in
+/// the replay too (the pile asks none).
 impl QueryDispatcher for Replay {
-    fn intersection_test(&self, _: &Pose, _: &dyn Shape, _: &dyn Shape) -> Result<ShapeIntersection, Unsupported> {
-        Err(Unsupported)
+    fn intersection_test(
+        &self,
+        pos12: &Pose,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+    ) -> Result<ShapeIntersection, Unsupported> {
+        self.inner.intersection_test(pos12, g1, g2)
     }
-    fn distance(&self, _: &Pose, _: &dyn Shape, _: &dyn Shape) -> Result<ShapeDistance, Unsupported> {
-        Err(Unsupported)
+    fn distance(&self, pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape) -> Result<ShapeDistance, Unsupported> {
+        self.inner.distance(pos12, g1, g2)
     }
-    fn contact(&self, _: &Pose, _: &dyn Shape, _: &dyn Shape, _: Real) -> Result<Option<Contact>, Unsupported> {
-        Err(Unsupported)
+    fn contact(
+        &self,
+        pos12: &Pose,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+        prediction: Real,
+    ) -> Result<Option<Contact>, Unsupported> {
+        self.inner.contact(pos12, g1, g2, prediction)
     }
-    fn closest_points(&self, _: &Pose, _: &dyn Shape, _: &dyn Shape, _: Real) -> Result<ClosestPoints, Unsupported> {
-        Err(Unsupported)
+    fn closest_points(
+        &self,
+        pos12: &Pose,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+        max_dist: Real,
+    ) -> Result<ClosestPoints, Unsupported> {
+        self.inner.closest_points(pos12, g1, g2, max_dist)
     }
     fn cast_shapes(
         &self,
-        _: &Pose,
-        _: Vector,
-        _: &dyn Shape,
-        _: &dyn Shape,
-        _: ShapeCastOptions,
+        pos12: &Pose,
+        vel12: Vector,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+        options: ShapeCastOptions,
     ) -> Result<Option<ShapeCastHit>, Unsupported> {
-        Err(Unsupported)
+        self.inner.cast_shapes(pos12, vel12, g1, g2, options)
     }
     fn cast_shapes_nonlinear(
         &self,
-        _: &NonlinearRigidMotion,
-        _: &dyn Shape,
-        _: &NonlinearRigidMotion,
-        _: &dyn Shape,
-        _: Real,
-        _: Real,
-        _: bool,
+        motion1: &NonlinearRigidMotion,
+        g1: &dyn Shape,
+        motion2: &NonlinearRigidMotion,
+        g2: &dyn Shape,
+        start_time: Real,
+        end_time: Real,
+        stop_at_penetration: bool,
     ) -> Result<Option<ShapeCastHit>, Unsupported> {
-        Err(Unsupported)
+        let Some(recording) = &self.replay else {
+            let answer =
+                self.inner
+                    .cast_shapes_nonlinear(motion1, g1, motion2, g2, start_time, end_time, stop_at_penetration);
+            self.log.lock().unwrap_or_else(|e| e.into_inner()).casts.push(answer);
+            return answer;
+        };
+        let k = self.next_cast.fetch_add(1, Ordering::Relaxed);
+        recording.casts.get(k).copied().unwrap_or(Err(Unsupported))
     }
 }
 
@@ -109,11 +142,12 @@ impl PersistentQueryDispatcher<ContactManifoldData, ContactData> for Replay {
             self.log
                 .lock()
                 .unwrap_or_else(|e| e.into_inner())
+                .manifolds
                 .push(manifolds.clone());
             return answer;
         };
         let k = self.next.fetch_add(1, Ordering::Relaxed);
-        let Some(recorded) = recording.get(k) else {
+        let Some(recorded) = recording.manifolds.get(k) else {
             return Err(Unsupported);
         };
         // The same call of the same run: the manifolds' rapier data are already the recorded
@@ -150,18 +184,29 @@ impl PersistentQueryDispatcher<ContactManifoldData, ContactData> for Replay {
 }
 
 /// Mean step seconds over `steps` steps of the exact pile (contact recycling on or off) with the
-/// manifolds of a recorded run of this crate's dispatcher handed back (the best of `runs`
-/// replays), and whether every replay ended in the recording's state, bit for bit.
+/// manifolds and casts of a recorded run of this crate's dispatcher handed back (the best of `runs`
+/// replays), and whether the recording and every replay ended in the state of a run with
+/// [`SmoothDispatcher`] alone, bit for bit.
 pub fn replayed_pile(recycling: bool, steps: usize, runs: usize) -> (f64, bool) {
     use std::time::Instant;
-    let log = Arc::new(Mutex::new(Recording::new()));
+    let log = Arc::new(Mutex::new(Recording::default()));
     let mut pile = Pile::on(Replay::recorder(&log), recycling);
     for _ in 0..steps {
         pile.step();
     }
     let end_state = state_hash(pile.world(), &pile.bodies()).0;
+    let mut plain = Pile::on(SmoothDispatcher::default(), recycling);
+    for _ in 0..steps {
+        plain.step();
+    }
+    let mut same = state_hash(plain.world(), &plain.bodies()).0 == end_state;
     let recording = Arc::new(std::mem::take(&mut *log.lock().unwrap_or_else(|e| e.into_inner())));
-    let (mut best, mut same) = (f64::INFINITY, true);
+    println!(
+        "(recorded: {} manifold calls, {} casts)",
+        recording.manifolds.len(),
+        recording.casts.len()
+    );
+    let mut best = f64::INFINITY;
     for _ in 0..runs {
         let mut pile = Pile::on(Replay::player(&recording), recycling);
         let start = Instant::now();

@@ -1,6 +1,7 @@
 //! A dispatcher that passes every query on to the one it wraps and tells a [`Watcher`] about
 //! it: which threads call rapier's narrow phase (`crates/parallel-tests`), how long each
-//! `contact_manifolds` call takes by pair kind (the pile benchmark, `benches/support/pile.rs`).
+//! `contact_manifolds` call and each CCD cast takes by pair kind (the pile benchmark,
+//! `benches/support/pile.rs`).
 #![allow(dead_code)]
 
 use parry2d_f64::math::{Pose, Real, Vector};
@@ -19,6 +20,9 @@ pub trait Watcher: Send + Sync {
     /// Called after every `contact_manifolds` call: its shapes, the seconds it took (one clock
     /// reading before, one after) and the contact points it returned.
     fn manifolds(&self, _g1: &dyn Shape, _g2: &dyn Shape, _seconds: f64, _points: usize) {}
+    /// Called after every `cast_shapes_nonlinear` call (rapier's CCD): its shapes and the
+    /// seconds it took.
+    fn cast(&self, _g1: &dyn Shape, _g2: &dyn Shape, _seconds: f64) {}
 }
 
 /// The dispatcher `inner`, watched by `watcher`; its answers are `inner`'s.
@@ -83,8 +87,12 @@ impl<D: QueryDispatcher, W: Watcher> QueryDispatcher for Watched<D, W> {
         stop_at_penetration: bool,
     ) -> Result<Option<ShapeCastHit>, Unsupported> {
         self.watcher.query();
-        self.inner
-            .cast_shapes_nonlinear(motion1, g1, motion2, g2, start_time, end_time, stop_at_penetration)
+        let start = std::time::Instant::now();
+        let answer =
+            self.inner
+                .cast_shapes_nonlinear(motion1, g1, motion2, g2, start_time, end_time, stop_at_penetration);
+        self.watcher.cast(g1, g2, start.elapsed().as_secs_f64());
+        answer
     }
 }
 
