@@ -13,7 +13,10 @@
 //! * `sweep/rounded_polygon-disc`: against parry's Box2D-style `sweep_time_of_impact`, without
 //!   spin (where both follow the same path);
 //! * `pile/step`: one rapier step of `examples/pile.rs`'s pile, exact shapes with
-//!   `SmoothDispatcher` against parry's polygon approximations.
+//!   `SmoothDispatcher` against parry's polygon approximations;
+//! * `ccd/resting-sweep`: rapier's CCD sweep (`stop_at_penetration = false`) of three bodies
+//!   already in the pile's floor (`scenes::resting_sweeps`, recorded in the pile), the exact
+//!   shapes against parry's on its stand-ins.
 //!
 //! Run with `cargo bench --bench toi` (add a filter such as `-- distance` for one kind). The
 //! ratios with the accuracy beside them are printed by `cargo bench --bench ratios`.
@@ -225,9 +228,44 @@ fn bench_pile(c: &mut Criterion) {
     g.finish();
 }
 
+fn bench_resting_sweeps(c: &mut Criterion) {
+    use support::resting::pile_polygonal;
+    let sweeps = support::scenes::resting_sweeps();
+    let exact: Vec<_> = sweeps.iter().map(|s| s.body.shared()).collect();
+    let stand_ins: Vec<_> = sweeps.iter().map(|s| pile_polygonal(&s.body)).collect();
+    let dt = 1.0 / 60.0;
+    let mut g = c.benchmark_group("ccd/resting-sweep");
+    short(&mut g);
+    let d = SmoothDispatcher::default();
+    g.bench_function(BenchmarkId::new("ours", sweeps.len()), |b| {
+        b.iter(|| {
+            for (s, body) in sweeps.iter().zip(&exact) {
+                let _ =
+                    black_box(d.cast_shapes_nonlinear(&s.motion, &**body, &s.floor_motion, &s.floor, 0.0, dt, false));
+            }
+        })
+    });
+    g.bench_function(BenchmarkId::new("parry-polygons", sweeps.len()), |b| {
+        b.iter(|| {
+            for (s, body) in sweeps.iter().zip(&stand_ins) {
+                let _ = black_box(DefaultQueryDispatcher.cast_shapes_nonlinear(
+                    &s.motion,
+                    &**body,
+                    &s.floor_motion,
+                    &s.floor,
+                    0.0,
+                    dt,
+                    false,
+                ));
+            }
+        })
+    });
+    g.finish();
+}
+
 criterion_group! {
     name = benches;
     config = Criterion::default();
-    targets = bench_toi, bench_distance, bench_manifolds, bench_sweep, bench_pile
+    targets = bench_toi, bench_distance, bench_manifolds, bench_sweep, bench_pile, bench_resting_sweeps
 }
 criterion_main!(benches);

@@ -521,3 +521,68 @@ fn same_scene_twice_is_bit_identical() {
     println!("determinism: {same}/{} state words bit-identical", a.len());
     assert_eq!(a, b);
 }
+
+/// Bodies already in the floor when rapier's CCD sweeps them (`stop_at_penetration = false`,
+/// recorded in the box pile) are reported where their contact first gets a quarter of the
+/// thinner `ccd_thickness` deeper (or a tenth of that below a contact already as deep), or not at
+/// all: checked against the reference signed distance (dense sampling, independent of the
+/// crate's queries) at the answer and a resolution before it, and at the rule's 16 samples for
+/// no hit.
+#[test]
+fn bodies_resting_in_the_floor_are_swept_to_where_the_contact_deepens_by_the_allowance() {
+    use common::reference::{pair_size, reference_distance_at};
+    use common::scenes::resting_sweeps;
+    use parry2d_f64::query::QueryDispatcher;
+    use parry2d_f64::shape::Shape;
+    let d = SmoothDispatcher::default();
+    let dt = 1.0 / 60.0;
+    for s in resting_sweeps() {
+        let h = s.floor.half_extents;
+        let floor_curve = RoundedPolygon::new(
+            &[
+                Vector::new(-h.x, -h.y),
+                Vector::new(h.x, -h.y),
+                h,
+                Vector::new(-h.x, h.y),
+            ],
+            0.0,
+        );
+        let body = s.body.shared();
+        let signed =
+            |t: f64| reference_distance_at(s.body.curve(), &s.motion, &floor_curve, &s.floor_motion, t).distance;
+        let size = pair_size(s.body.curve(), &floor_curve);
+        let tol = 1e-12 * size;
+        let thickness = body.ccd_thickness().min(s.floor.ccd_thickness());
+        let allowance = 0.25 * thickness;
+        let d0 = signed(0.0);
+        let target = (-allowance).min(d0 - 0.1 * allowance);
+        assert!(d0 < 0.0, "{}: in the floor at the start ({d0})", s.name);
+        let hit = d
+            .cast_shapes_nonlinear(&s.motion, &*body, &s.floor_motion, &s.floor, 0.0, dt, false)
+            .expect("answered");
+        match hit {
+            Some(hit) => {
+                let t = hit.time_of_impact;
+                let (at, before) = (signed(t), signed(t - 2e-9 * dt));
+                println!(
+                    "{}: depth {d0:.4e} at the start, hit at {:.6} of the step, D there {at:.6e}, target {target:.6e}",
+                    s.name,
+                    t / dt
+                );
+                assert!(t > 0.0 && t <= dt, "{}: {t}", s.name);
+                assert!(
+                    at < target + tol && before > target - tol,
+                    "{}: {before} then {at}",
+                    s.name
+                );
+            }
+            None => {
+                println!("{}: depth {d0:.4e} at the start, no hit (target {target:.6e})", s.name);
+                for k in 1..=16 {
+                    let tk = dt * k as f64 / 16.0;
+                    assert!(signed(tk) >= target - tol, "{}: below the target at {tk}", s.name);
+                }
+            }
+        }
+    }
+}

@@ -61,7 +61,7 @@ use crate::curve::pieces::{flat_pieces, piece_index, piece_is_flat};
 use crate::curve::ConvexCurve;
 use crate::numerics::math::{Pose, Real, Vector};
 use crate::parry_shape::{face_id, vertex_id, FLAT_FEATURE_MAX_ANGLE};
-use crate::query::contact::{apart_along, Contact, Feature};
+use crate::query::contact::{Contact, Feature};
 use crate::query::stationary::StationaryDistance;
 use crate::SmoothDispatcher;
 use parry2d_f64::query::details::{NormalConstraints, NormalConstraintsPair};
@@ -305,12 +305,6 @@ impl SmoothDispatcher {
             return true;
         }
         let hint = Some(manifold.local_n1).filter(|n| self.warm_start && n.is_finite() && *n != Vector::ZERO);
-        // A pair apart along the previous normal (or, cold, the line of the centres) by more
-        // than the prediction has no point: proved by two support values, no search.
-        if input_guard::pose_ok(pos12) && apart_along(s1, s2, pos12, hint.unwrap_or(pos12.translation), prediction) {
-            manifold.clear();
-            return true;
-        }
         match exact_contact_of(s1, s2, pos12, hint) {
             Some(c) => manifold_from_contact(pos12, &c, prediction, manifold),
             None => false,

@@ -404,3 +404,82 @@ pub fn head_on(
     let hb = launch(HEAD_ON_X, -1.0, sb, b, false);
     (world, ha, hb)
 }
+
+/// A CCD sweep rapier asked of the dispatcher in the box pile: a body already in the floor box
+/// at the start of the step (`stop_at_penetration = false`, the window one step of 1/60 s),
+/// which the start-contact rule answers (recorded from the pile's runs).
+pub struct RestingSweep {
+    /// What the sweep is.
+    pub name: &'static str,
+    /// The body's shape and motion.
+    pub body: PileShape,
+    pub motion: parry2d_f64::query::NonlinearRigidMotion,
+    /// The floor box (the pile's first wall) and its motion (at rest).
+    pub floor: parry2d_f64::shape::Cuboid,
+    pub floor_motion: parry2d_f64::query::NonlinearRigidMotion,
+}
+
+/// The three slowest sweeps of a pile run: two `CapsuleEllipse`s and an ellipse spinning at
+/// 13–27 rad/s while in the floor.
+pub fn resting_sweeps() -> Vec<RestingSweep> {
+    use parry2d_f64::math::Pose;
+    use parry2d_f64::query::NonlinearRigidMotion;
+    let motion = |(re, im): (f64, f64), t: [f64; 2], c: [f64; 2], v: [f64; 2], w: f64| {
+        let mut start = Pose::new(Vector::new(t[0], t[1]), 0.0);
+        start.rotation.re = re;
+        start.rotation.im = im;
+        NonlinearRigidMotion::new(start, Vector::new(c[0], c[1]), Vector::new(v[0], v[1]), w)
+    };
+    let (centre, half) = pile_walls()[0];
+    let floor = parry2d_f64::shape::Cuboid::new(half);
+    let floor_motion = NonlinearRigidMotion::new(Pose::new(centre, 0.0), Vector::ZERO, Vector::ZERO, 0.0);
+    vec![
+        RestingSweep {
+            name: "capsule ellipse, 19 rad/s",
+            body: PileShape::Capsule(CapsuleEllipse::new(
+                0.178_234_504_238_823_37,
+                0.109_016_788_418_517_27,
+                0.167_714_088_374_334_74,
+            )),
+            motion: motion(
+                (-0.034_168_353_875_497_52, -0.999_416_091_322_047_2),
+                [-0.334_812_958_242_428, 0.178_963_876_429_483_8],
+                [0.011_258_892_149_778_411, -2.059_984_127_722_458_4e-18],
+                [-1.710_109_712_819_610_8, -2.215_656_670_272_618],
+                19.250_505_440_691_928,
+            ),
+            floor,
+            floor_motion,
+        },
+        RestingSweep {
+            name: "capsule ellipse, 14 rad/s",
+            body: PileShape::Capsule(CapsuleEllipse::new(
+                0.127_643_510_412_145_17,
+                0.034_864_026_770_626_97,
+                0.174_338_512_523_946_25,
+            )),
+            motion: motion(
+                (0.018_974_962_525_721_645, -0.999_819_959_191_227_3),
+                [-0.923_284_777_736_674_4, 0.125_671_351_445_109_88],
+                [-0.016_941_900_915_805_03, 1.029_992_063_861_229_2e-17],
+                [-1.972_706_692_825_847_4, 0.490_722_179_003_552_64],
+                13.648_057_258_332_125,
+            ),
+            floor,
+            floor_motion,
+        },
+        RestingSweep {
+            name: "ellipse, 27 rad/s",
+            body: PileShape::Ellipse(Ellipse::new(0.228_795_364_536_342_14, 0.098_942_531_627_549_4)),
+            motion: motion(
+                (0.919_679_486_465_683_9, -0.392_669_889_569_108_75),
+                [3.564_996_040_121_253_7, 0.127_851_480_521_780_5],
+                [0.0, 0.0],
+                [-0.263_043_739_540_886_9, -3.432_771_096_673_055],
+                26.619_307_138_972_49,
+            ),
+            floor,
+            floor_motion,
+        },
+    ]
+}

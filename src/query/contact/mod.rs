@@ -61,12 +61,10 @@
 
 mod arc;
 pub(crate) mod feet;
-mod separation;
 mod side;
 mod two_ellipses;
 mod walk;
 
-pub(crate) use separation::apart_along;
 pub(crate) use side::SupportShape;
 
 use crate::numerics::math::{perp, Pose, Vector};
