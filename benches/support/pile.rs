@@ -77,8 +77,9 @@ impl Pile {
         self.world.step(GRAVITY, &());
     }
 
-    /// The pile with its dispatcher's `contact_manifolds` calls timed and counted by pair kind
-    /// (into `stats`); the rest as [`Pile::with`] (warm start on).
+    /// The pile with its dispatcher's `contact_manifolds` calls and CCD casts
+    /// (`cast_shapes_nonlinear`) timed and counted by pair kind (into `stats`); the rest as
+    /// [`Pile::with`] (warm start on).
     pub fn timed(exact: bool, recycling: bool, stats: &Arc<Mutex<CallStats>>) -> Self {
         let watcher = CallTimes(Arc::clone(stats));
         let narrow_phase = if exact {

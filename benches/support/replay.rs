@@ -26,8 +26,8 @@ pub struct Recording {
     casts: Vec<Result<Option<ShapeCastHit>, Unsupported>>,
 }
 
-/// The dispatcher of a recording run ([`SmoothDispatcher`], its manifolds logged after each
-/// call) or of a replay (the logged manifolds handed back in order).
+/// The dispatcher of a recording run ([`SmoothDispatcher`], its manifolds and nonlinear casts
+/// logged after each call) or of a replay (the logged answers handed back in order).
 pub struct Replay {
     inner: SmoothDispatcher,
     log: Arc<Mutex<Recording>>,
@@ -49,7 +49,7 @@ impl Replay {
         }
     }
 
-    /// A dispatcher handing back `recording`'s manifolds in order.
+    /// A dispatcher handing back `recording`'s manifolds and casts in order.
     pub fn player(recording: &Arc<Recording>) -> Self {
         Self {
             inner: SmoothDispatcher::default(),
@@ -171,15 +171,24 @@ impl PersistentQueryDispatcher<ContactManifoldData, ContactData> for Replay {
 
     fn contact_manifold_convex_convex(
         &self,
-        _: &Pose,
-        _: &dyn Shape,
-        _: &dyn Shape,
-        _: Option<&dyn parry2d_f64::query::details::NormalConstraints>,
-        _: Option<&dyn parry2d_f64::query::details::NormalConstraints>,
-        _: Real,
-        _: &mut ContactManifold,
+        pos12: &Pose,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+        normal_constraints1: Option<&dyn parry2d_f64::query::details::NormalConstraints>,
+        normal_constraints2: Option<&dyn parry2d_f64::query::details::NormalConstraints>,
+        prediction: Real,
+        manifold: &mut ContactManifold,
     ) -> Result<(), Unsupported> {
-        Err(Unsupported)
+        // rapier asks for whole pairs (`contact_manifolds`); a direct call is computed.
+        self.inner.contact_manifold_convex_convex(
+            pos12,
+            g1,
+            g2,
+            normal_constraints1,
+            normal_constraints2,
+            prediction,
+            manifold,
+        )
     }
 }
 

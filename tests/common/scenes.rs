@@ -417,10 +417,13 @@ pub struct RestingSweep {
     /// The floor box (the pile's first wall) and its motion (at rest).
     pub floor: parry2d_f64::shape::Cuboid,
     pub floor_motion: parry2d_f64::query::NonlinearRigidMotion,
+    /// Whether the contact gets deep enough within the step for the rule to report it.
+    pub deepens: bool,
 }
 
 /// The three slowest sweeps of a pile run: two `CapsuleEllipse`s and an ellipse spinning at
-/// 13–27 rad/s while in the floor.
+/// 13–27 rad/s while in the floor (the second one rises out of it within the step, the others
+/// dive deeper).
 pub fn resting_sweeps() -> Vec<RestingSweep> {
     use parry2d_f64::math::Pose;
     use parry2d_f64::query::NonlinearRigidMotion;
@@ -450,6 +453,7 @@ pub fn resting_sweeps() -> Vec<RestingSweep> {
             ),
             floor,
             floor_motion,
+            deepens: true,
         },
         RestingSweep {
             name: "capsule ellipse, 14 rad/s",
@@ -467,6 +471,7 @@ pub fn resting_sweeps() -> Vec<RestingSweep> {
             ),
             floor,
             floor_motion,
+            deepens: false,
         },
         RestingSweep {
             name: "ellipse, 27 rad/s",
@@ -480,6 +485,7 @@ pub fn resting_sweeps() -> Vec<RestingSweep> {
             ),
             floor,
             floor_motion,
+            deepens: true,
         },
     ]
 }
