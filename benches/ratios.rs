@@ -980,6 +980,9 @@ fn main() {
     if want("pile-bound") {
         pile_bound_table();
     }
+    if want("pile-calls") {
+        support::replay::pile_calls_table(400);
+    }
     // A parry cast that never returned may still be spinning on its thread.
     use std::io::Write;
     let _ = std::io::stdout().flush();

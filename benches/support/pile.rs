@@ -59,7 +59,16 @@ impl Pile {
     where
         D: PersistentQueryDispatcher<ContactManifoldData, ContactData> + 'static,
     {
-        Self::build(NarrowPhase::with_query_dispatcher(dispatcher), true, recycling)
+        Self::on_shapes(dispatcher, true, recycling)
+    }
+
+    /// The pile with the exact shapes (`exact`) or parry's stand-ins, `dispatcher` as rapier's
+    /// narrow phase, contact recycling on or off.
+    pub fn on_shapes<D>(dispatcher: D, exact: bool, recycling: bool) -> Self
+    where
+        D: PersistentQueryDispatcher<ContactManifoldData, ContactData> + 'static,
+    {
+        Self::build(NarrowPhase::with_query_dispatcher(dispatcher), exact, recycling)
     }
 
     /// The rapier world.
@@ -155,7 +164,7 @@ fn shape_name(g: &dyn Shape) -> String {
 }
 
 /// "a – b" with the two shapes' names sorted.
-fn pair_kind(g1: &dyn Shape, g2: &dyn Shape) -> String {
+pub fn pair_kind(g1: &dyn Shape, g2: &dyn Shape) -> String {
     let mut names = [shape_name(g1), shape_name(g2)];
     names.sort();
     format!("{} – {}", names[0], names[1])
