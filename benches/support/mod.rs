@@ -3,7 +3,8 @@
 //! outcome, the casts being compared, the poses of the stationary benchmarks, the rounded
 //! polygon – disc scenarios of the sweep benchmarks, timing, parry's polygonal stand-ins, the
 //! comparison on parry's own shapes ([`native`]), parry's own pairs through the dispatcher
-//! ([`parry_pairs`]), the pile ([`pile`]) and its replay with a free narrow phase ([`replay`]).
+//! ([`parry_pairs`]), the pile ([`pile`], its tables [`pile_tables`]) and its replays
+//! ([`replay`]).
 //! The files of
 //! `tests/common` it needs are included as they are (`#[path]`):
 //! the reference, the RNG, the scenario generator, the rapier world and its scenes, the resting
@@ -29,6 +30,7 @@ pub mod manifolds;
 pub mod native;
 pub mod parry_pairs;
 pub mod pile;
+pub mod pile_tables;
 pub mod replay;
 
 use parry2d_f64::math::Pose;
