@@ -189,7 +189,7 @@ pub fn pile_call_table(steps: usize) {
     use super::pile::{CallStats, Pile};
     use std::sync::{Arc, Mutex};
     println!(
-        "The dispatcher's `contact_manifolds` calls over the first {steps} steps, by pair kind (one run; a pair of clock readings costs about 50 ns here, so some 25–50 ns of each call's time is the clock's):\n"
+        "The dispatcher's `contact_manifolds` calls over the first {steps} steps, by pair kind (one run; each call's time includes a pair of clock readings, about 50 ns here, and follows the timer's own bookkeeping: `-- pile-calls` times the same calls without either):\n"
     );
     println!("| contact recycling | narrow phase | pair kind | calls per step | µs per call | ms per step | points per call |");
     println!("|---|---|---|---:|---:|---:|---:|");
