@@ -22,6 +22,7 @@ pub mod scenarios;
 #[path = "../../tests/common/scenes.rs"]
 pub mod scenes;
 #[path = "../../tests/common/watched.rs"]
+#[macro_use]
 pub mod watched;
 #[path = "../../tests/common/world.rs"]
 pub mod world;

@@ -134,45 +134,8 @@ impl Replay {
 /// Every query but the manifolds and the nonlinear casts is the inner dispatcher's, computed in
 /// the replay too (the pile asks none).
 impl<D: QueryDispatcher> QueryDispatcher for Replay<D> {
-    fn intersection_test(
-        &self,
-        pos12: &Pose,
-        g1: &dyn Shape,
-        g2: &dyn Shape,
-    ) -> Result<ShapeIntersection, Unsupported> {
-        self.inner.intersection_test(pos12, g1, g2)
-    }
-    fn distance(&self, pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape) -> Result<ShapeDistance, Unsupported> {
-        self.inner.distance(pos12, g1, g2)
-    }
-    fn contact(
-        &self,
-        pos12: &Pose,
-        g1: &dyn Shape,
-        g2: &dyn Shape,
-        prediction: Real,
-    ) -> Result<Option<Contact>, Unsupported> {
-        self.inner.contact(pos12, g1, g2, prediction)
-    }
-    fn closest_points(
-        &self,
-        pos12: &Pose,
-        g1: &dyn Shape,
-        g2: &dyn Shape,
-        max_dist: Real,
-    ) -> Result<ClosestPoints, Unsupported> {
-        self.inner.closest_points(pos12, g1, g2, max_dist)
-    }
-    fn cast_shapes(
-        &self,
-        pos12: &Pose,
-        vel12: Vector,
-        g1: &dyn Shape,
-        g2: &dyn Shape,
-        options: ShapeCastOptions,
-    ) -> Result<Option<ShapeCastHit>, Unsupported> {
-        self.inner.cast_shapes(pos12, vel12, g1, g2, options)
-    }
+    forward_plain_queries!(inner);
+
     fn cast_shapes_nonlinear(
         &self,
         motion1: &NonlinearRigidMotion,

@@ -31,51 +31,62 @@ pub struct Watched<D, W> {
     pub watcher: W,
 }
 
+/// The five queries of `QueryDispatcher` a pass-through dispatcher hands on unchanged to its
+/// field `$inner`, each after `self.$hook.query()` when a hook field is named:
+/// `forward_plain_queries!(inner, watcher)` in [`Watched`], `forward_plain_queries!(inner)` in
+/// the benches' replay (`benches/support/replay.rs`). Each writes `cast_shapes_nonlinear`.
+macro_rules! forward_plain_queries {
+    ($inner:ident $(, $hook:ident)?) => {
+        fn intersection_test(
+            &self,
+            pos12: &Pose,
+            g1: &dyn Shape,
+            g2: &dyn Shape,
+        ) -> Result<ShapeIntersection, Unsupported> {
+            $(self.$hook.query();)?
+            self.$inner.intersection_test(pos12, g1, g2)
+        }
+        fn distance(&self, pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape) -> Result<ShapeDistance, Unsupported> {
+            $(self.$hook.query();)?
+            self.$inner.distance(pos12, g1, g2)
+        }
+        fn contact(
+            &self,
+            pos12: &Pose,
+            g1: &dyn Shape,
+            g2: &dyn Shape,
+            prediction: Real,
+        ) -> Result<Option<Contact>, Unsupported> {
+            $(self.$hook.query();)?
+            self.$inner.contact(pos12, g1, g2, prediction)
+        }
+        fn closest_points(
+            &self,
+            pos12: &Pose,
+            g1: &dyn Shape,
+            g2: &dyn Shape,
+            max_dist: Real,
+        ) -> Result<ClosestPoints, Unsupported> {
+            $(self.$hook.query();)?
+            self.$inner.closest_points(pos12, g1, g2, max_dist)
+        }
+        fn cast_shapes(
+            &self,
+            pos12: &Pose,
+            local_vel12: Vector,
+            g1: &dyn Shape,
+            g2: &dyn Shape,
+            options: ShapeCastOptions,
+        ) -> Result<Option<ShapeCastHit>, Unsupported> {
+            $(self.$hook.query();)?
+            self.$inner.cast_shapes(pos12, local_vel12, g1, g2, options)
+        }
+    };
+}
+
 impl<D: QueryDispatcher, W: Watcher> QueryDispatcher for Watched<D, W> {
-    fn intersection_test(
-        &self,
-        pos12: &Pose,
-        g1: &dyn Shape,
-        g2: &dyn Shape,
-    ) -> Result<ShapeIntersection, Unsupported> {
-        self.watcher.query();
-        self.inner.intersection_test(pos12, g1, g2)
-    }
-    fn distance(&self, pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape) -> Result<ShapeDistance, Unsupported> {
-        self.watcher.query();
-        self.inner.distance(pos12, g1, g2)
-    }
-    fn contact(
-        &self,
-        pos12: &Pose,
-        g1: &dyn Shape,
-        g2: &dyn Shape,
-        prediction: Real,
-    ) -> Result<Option<Contact>, Unsupported> {
-        self.watcher.query();
-        self.inner.contact(pos12, g1, g2, prediction)
-    }
-    fn closest_points(
-        &self,
-        pos12: &Pose,
-        g1: &dyn Shape,
-        g2: &dyn Shape,
-        max_dist: Real,
-    ) -> Result<ClosestPoints, Unsupported> {
-        self.watcher.query();
-        self.inner.closest_points(pos12, g1, g2, max_dist)
-    }
-    fn cast_shapes(
-        &self,
-        pos12: &Pose,
-        local_vel12: Vector,
-        g1: &dyn Shape,
-        g2: &dyn Shape,
-        options: ShapeCastOptions,
-    ) -> Result<Option<ShapeCastHit>, Unsupported> {
-        self.watcher.query();
-        self.inner.cast_shapes(pos12, local_vel12, g1, g2, options)
-    }
+    forward_plain_queries!(inner, watcher);
+
     fn cast_shapes_nonlinear(
         &self,
         motion1: &NonlinearRigidMotion,
