@@ -186,6 +186,10 @@ pub enum QueryError {
     /// (`start_time == end_time`) is not an error: the answer is at `start_time`,
     /// [`crate::ToiStatus::PenetratingAtStart`] or [`crate::ToiStatus::NoHit`].
     EmptyWindow,
+    /// A motion the query's path cannot follow: [`crate::MotionPath::Nlerp`] with both bodies
+    /// turning (the nlerp path of one body is a uniform turn on a translation clock; two
+    /// bodies' turns have no common clock).
+    UnsupportedMotion,
 }
 
 impl fmt::Display for QueryError {
@@ -196,6 +200,7 @@ impl fmt::Display for QueryError {
             QueryError::Degenerate => "a shape evaluated to a non-finite value",
             QueryError::EmptyWindow => "the time window is reversed",
             QueryError::UnsupportedShape => "a shape the query cannot take",
+            QueryError::UnsupportedMotion => "a motion the query's path cannot follow (nlerp with both bodies turning)",
         })
     }
 }

@@ -46,6 +46,7 @@ pub use numerics::motion::PairFrame;
 pub use parry_shape::FLAT_FEATURE_MAX_ANGLE;
 pub use query::halfspace::{halfspace_distance, time_of_impact_halfspace};
 pub use query::pair::{eval_pair, eval_pair_at, PairJet};
+pub use query::path::MotionPath;
 pub use query::stationary::{stationary_distance, DistanceOptions, DistanceStatus, StationaryDistance};
 pub use query::toi::{
     bounding_circles_part, time_of_impact, time_of_impact_traced, TimeOfImpact, ToiCost, ToiOptions, ToiStatus,

@@ -8,6 +8,10 @@
 
 #[path = "../../tests/common/appendix_d.rs"]
 pub mod appendix_d;
+#[path = "../../tests/common/ccd_judge.rs"]
+pub mod ccd_judge;
+#[path = "../../tests/common/ccd_scenes.rs"]
+pub mod ccd_scenes;
 #[path = "../../tests/common/reference.rs"]
 pub mod reference;
 #[path = "../../tests/common/resting.rs"]

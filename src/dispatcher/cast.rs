@@ -15,7 +15,7 @@ use crate::error::QueryError;
 use crate::numerics::math::Real;
 use crate::query::gap::{gap_distance, gap_time_of_impact};
 use crate::query::halfspace::{halfspace_distance, time_of_impact_halfspace};
-use crate::query::toi::{bounding_circles_part, TimeOfImpact, ToiOptions};
+use crate::query::toi::{bounding_circles_part, TimeOfImpact, ToiOptions, ToiStatus};
 use parry2d_f64::query::{NonlinearRigidMotion, ShapeCastHit, Unsupported};
 use parry2d_f64::shape::{HalfSpace, Shape};
 
@@ -162,6 +162,11 @@ impl SmoothDispatcher {
         opts: &ToiOptions,
     ) -> Result<Option<ShapeCastHit>, Unsupported> {
         let (a, b) = if swapped { (c2, c1) } else { (c1, c2) };
+        if !self.plain(c) {
+            if let Some(r) = self.rapier_cast(c, a, b, opts, |o| curves_toi(a, c.m1, b, c.m2, c.t0, c.t1, o)) {
+                return r;
+            }
+        }
         // The specification's inexpensive test first: circles that never meet, no impact
         // (and no contact at the start for the rapier rule below).
         if bounding_circles_part(a.get(), c.m1, b.get(), c.m2, c.t0, c.t1, opts.target_distance) {
@@ -199,6 +204,11 @@ impl SmoothDispatcher {
         let (Some(p1), Some(p2)) = (c1.gap_side(), c2.gap_side()) else {
             return Err(Unsupported);
         };
+        if !self.plain(c) {
+            if let Some(r) = self.rapier_cast(c, c1, c2, opts, |o| gap_time_of_impact(p1, c.m1, p2, c.m2, c.t0, c.t1, o)) {
+                return r;
+            }
+        }
         if bounding_circles_part(c1.get(), c.m1, c2.get(), c.m2, c.t0, c.t1, opts.target_distance) {
             return Ok(None);
         }
@@ -219,6 +229,126 @@ impl SmoothDispatcher {
             },
             |t| at(t).map(|d| d.0),
         )
+    }
+
+    /// The rapier rule (experimental form): separated at the start, the exact time of impact
+    /// `full(opts)`; in contact, the first time the signed distance drops below
+    /// min(−A, d₀ − A/10), A a quarter of the thinner positive `ccd_thickness`, by the gap
+    /// tracker at that level. `None`: not answerable this way (the caller goes on).
+    fn rapier_cast(
+        &self,
+        c: &NonlinearCast,
+        c1: &CurveOf,
+        c2: &CurveOf,
+        opts: &ToiOptions,
+        full: impl Fn(&ToiOptions) -> Result<TimeOfImpact, QueryError>,
+    ) -> Option<Result<Option<ShapeCastHit>, Unsupported>> {
+        if std::env::var("NO_RULE").is_ok() {
+            return None;
+        }
+        if !crate::dispatcher::start_contact::is_window(c.t0, c.t1) {
+            return None;
+        }
+        if bounding_circles_part(c1.get(), c.m1, c2.get(), c.m2, c.t0, c.t1, opts.target_distance) {
+            return Some(Ok(None));
+        }
+        let pos12 = pos12_at(c.m1, c.m2, c.t0);
+        let gap = StartContactPolicy::START_CONTACT_GAP * pair_size(c.g1, c.g2);
+        let d0 = exact_contact(&pos12, c.g1, c.g2, None).map(|k| k.dist)?;
+        let nlerp = ToiOptions {
+            path: if c.m2.angvel == 0.0 || c.m1.angvel == 0.0 {
+                crate::MotionPath::Nlerp
+            } else {
+                crate::MotionPath::ConstantSpin
+            },
+            ..*opts
+        };
+        if d0 > gap {
+            return Some(toi_to_parry(full(&nlerp).map(Some)));
+        }
+        // The fast body: the one that moves (rapier's is shape 1, but parry's composite helpers
+        // hand a composite target's parts over as shape 1).
+        let still = |m: &NonlinearRigidMotion| m.linvel == parry2d_f64::math::Vector::ZERO && m.angvel == 0.0;
+        let (fast_g, fast_m, other_g, other_m) = if still(c.m1) && !still(c.m2) {
+            (c.g2, c.m2, c.g1, c.m1)
+        } else {
+            (c.g1, c.m1, c.g2, c.m2)
+        };
+        // The inradius of the fast body about its rotation centre.
+        let centre = fast_m.local_center;
+        let proj = fast_g.project_local_point(centre, false);
+        let r_in = if proj.is_inside { (proj.point - centre).length() } else { 0.0 };
+        let r_in = if r_in > 0.0 { r_in } else { fast_g.ccd_thickness().max(gap) };
+        let approaching = || {
+            let Some(k) = exact_contact(&pos12, c.g1, c.g2, None) else {
+                return false;
+            };
+            let span = c.t1 - c.t0;
+            let eff = |m: &NonlinearRigidMotion| {
+                let d = crate::wrap_phi(m.angvel * span);
+                NonlinearRigidMotion { angvel: d.sin() / span, ..*m }
+            };
+            let sc = StartContact {
+                distance: k.dist,
+                point1: k.points[0].point1,
+                point2: pos12.inverse_transform_point(k.points[0].point2),
+                normal1: k.normal,
+            };
+            sc.rate(&eff(c.m1), &eff(c.m2), c.t0) < 0.0
+        };
+        let rule = std::env::var("RULE").unwrap_or_default();
+        let nudge = c.t0 + StartContactPolicy::START_NUDGE * (c.t1 - c.t0);
+        // The core: a disc about the fast body's rotation centre, moving with it.
+        let core_frac: f64 = std::env::var("CORE_FRAC").ok().and_then(|s| s.parse().ok()).unwrap_or(0.5);
+        let core = parry2d_f64::shape::Ball::new(core_frac * r_in);
+        let com0 = fast_m.start * fast_m.local_center;
+        let mc = NonlinearRigidMotion::new(
+            parry2d_f64::math::Pose::from_translation(com0),
+            parry2d_f64::math::Vector::ZERO,
+            fast_m.linvel,
+            0.0,
+        );
+        let core_r = match shape_time_of_impact(&core, &mc, other_g, other_m, c.t0, c.t1, &ToiOptions { stop_at_penetration: true, ..*opts }) {
+            Ok(r) => r,
+            Err(e) => return Some(toi_to_parry(Err(e))),
+        };
+        let t_core = (core_r.status != ToiStatus::NoHit).then_some(core_r.time);
+        let use_pen = !(rule == "core" || (rule == "mixed" && approaching()));
+        let t_pen = if use_pen {
+            let allowance = StartContactPolicy::ALLOWANCE * r_in;
+            let floor = -0.9 * r_in;
+            let mut level = (-allowance).min(d0 - StartContactPolicy::DEEPER_FRACTION * allowance);
+            if level < floor {
+                level = floor.min(d0 - 1e-3 * allowance);
+            }
+            if rule == "trans" {
+                level = (-allowance).min(d0 - allowance);
+            }
+            let (s1, s2) = (c1.any_side()?, c2.any_side()?);
+            let (mut m1, mut m2) = (*c.m1, *c.m2);
+            if rule == "trans" {
+                m1.angvel = 0.0;
+                m2.angvel = 0.0;
+            }
+            match crate::query::gap::gap_time_to_level(s1, &m1, s2, &m2, c.t0, c.t1, level, &nlerp) {
+                Ok(r) if r.status == ToiStatus::NoHit => None,
+                Ok(r) => Some(r),
+                Err(e) => return Some(toi_to_parry(Err(e))),
+            }
+        } else {
+            None
+        };
+        let pick = match (t_pen, t_core) {
+            (Some(p), Some(tc)) if tc < p.time => Some(TimeOfImpact { time: tc, ..p }),
+            (Some(p), _) => Some(p),
+            (None, Some(tc)) => Some(TimeOfImpact { time: tc, status: ToiStatus::PenetratingAtStart, ..core_r }),
+            (None, None) => None,
+        };
+        Some(toi_to_parry(Ok(pick.map(|r| TimeOfImpact {
+            time: r.time.max(nudge),
+            status: ToiStatus::PenetratingAtStart,
+            ..r
+        }))))
     }
 
     /// A curve against a half-space: the half-space cast.

@@ -52,6 +52,7 @@
 //! over small facets).
 
 use super::composite::{composite_manifolds, is_composite_like, single_manifold};
+use super::core_disc::{core_contact, CoreContact};
 use super::input_guard;
 use super::parry_fallback::{pair_size, parry_within, pushed_together, TOUCH_PUSH};
 use super::parry_pairs;
@@ -70,6 +71,10 @@ use parry2d_f64::query::{
     Unsupported,
 };
 use parry2d_f64::shape::{HalfSpace, PackedFeatureId, Shape, ShapeType};
+
+/// The feature code of a core contact on both bodies ([`super::core_disc`]): the largest
+/// vertex code but one, which no shape's vertex numbering reaches.
+const CORE_FEATURE: u32 = 0x3fff_fffe;
 
 /// The feature id of the point of `c` whose outward normal is `n` (see the module docs).
 fn curve_fid(c: &dyn ConvexCurve, n: Vector) -> PackedFeatureId {
@@ -224,6 +229,7 @@ fn manifold_from_distance<M, C: Default + Copy>(
 fn manifold_from_contact<M, C: Default + Copy>(
     pos12: &Pose,
     c: &Contact,
+    core: Option<CoreContact>,
     prediction: Real,
     manifold: &mut ContactManifold<M, C>,
 ) -> bool {
@@ -240,8 +246,13 @@ fn manifold_from_contact<M, C: Default + Copy>(
         Feature::Face(k) => face_id(k),
         Feature::Vertex(k) => vertex_id(k),
     };
-    for p in &c.points[..c.len] {
-        if p.dist <= prediction {
+    // The deepest point within the prediction makes a contact; the second point of facing faces
+    // (the other end of the clipped incident face) goes with it whatever its distance: rapier's
+    // solver takes it as a speculative contact only when the bodies' velocities would close it
+    // within the step (a face turning in), and a one-point contact would leave that unseen.
+    let keep = c.len > 0 && c.points[0].dist <= prediction;
+    for (k, p) in c.points[..c.len].iter().enumerate() {
+        if p.dist <= prediction || (keep && k > 0) {
             manifold.points.push(TrackedContact::new(
                 p.point1,
                 local2(p.point2),
@@ -249,6 +260,32 @@ fn manifold_from_contact<M, C: Default + Copy>(
                 fid(p.feature2),
                 p.dist,
             ));
+        }
+    }
+    if let Some(k) = core.filter(|_| !manifold.points.is_empty()) {
+        let core_point = TrackedContact::new(
+            k.point1,
+            local2(k.point2),
+            vertex_id(CORE_FEATURE),
+            vertex_id(CORE_FEATURE),
+            k.dist,
+        );
+        match manifold.points.len() {
+            1 => manifold.points.push(core_point),
+            _ => {
+                // The points on the core's body (the incident one).
+                let on_body = |p: &TrackedContact<C>| {
+                    if c.reference == Some(1) {
+                        p.local_p1
+                    } else {
+                        pos12 * p.local_p2
+                    }
+                };
+                let pts = [on_body(&manifold.points[0]), on_body(&manifold.points[1])];
+                if !k.straddled_by(c.normal, pts) {
+                    manifold.points[1] = core_point;
+                }
+            }
         }
     }
     manifold.match_contacts(&old[..n_old]);
@@ -306,7 +343,10 @@ impl SmoothDispatcher {
         }
         let hint = Some(manifold.local_n1).filter(|n| self.warm_start && n.is_finite() && *n != Vector::ZERO);
         match exact_contact_of(s1, s2, pos12, hint) {
-            Some(c) => manifold_from_contact(pos12, &c, prediction, manifold),
+            Some(c) => {
+                let core = core_contact(s1, s2, pos12, &c);
+                manifold_from_contact(pos12, &c, core, prediction, manifold)
+            }
             None => false,
         }
     }

@@ -57,6 +57,7 @@
 
 mod cast;
 mod composite;
+mod core_disc;
 pub(crate) mod inline_polygon;
 pub(crate) mod input_guard;
 mod manifold;
@@ -65,7 +66,7 @@ mod parry_pairs;
 mod queries;
 pub(crate) mod route;
 pub(crate) mod start_contact;
-mod support_shape;
+pub(crate) mod support_shape;
 
 pub use cast::shape_time_of_impact;
 pub use start_contact::StartContactPolicy;

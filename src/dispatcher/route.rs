@@ -63,6 +63,15 @@ impl CurveOf<'_> {
         }
     }
 
+    /// The curve as a side of the gap tracker, a strictly convex curve included (a curve with no
+    /// face); `None` for a curve known only as a trait object that is not strictly convex.
+    pub(crate) fn any_side(&self) -> Option<Side<'_>> {
+        self.gap_side().or_else(|| {
+            let curve = self.get();
+            curve.is_strictly_convex().then_some(Side::Curve(CurveSide { curve, faces: &[] }))
+        })
+    }
+
     /// The curve as a side of the gap tracker (a dilated polygon, or a curve with its faces);
     /// `None` for a curve the dispatcher only knows as a trait object.
     pub(crate) fn gap_side(&self) -> Option<Side<'_>> {

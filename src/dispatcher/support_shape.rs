@@ -6,13 +6,19 @@
 use super::input_guard;
 use super::route::{box_vertices, ccw_triangle};
 use crate::numerics::math::{perp, Pose, Vector};
-use crate::parry_shape::FLAT_FEATURE_MAX_ANGLE;
 use crate::query::contact::{contact, Contact, SupportShape};
 use crate::{CapsuleEllipse, Ellipse, RoundedPolygon};
 use parry2d_f64::shape::{
     Ball, Capsule, ConvexPolygon, Cuboid, RoundConvexPolygon, RoundCuboid, RoundTriangle, Segment, Shape, ShapeType,
     Triangle,
 };
+
+/// Faces of the two shapes that face each other within this angle (radians) give the exact
+/// contact's manifold two points, the incident face clipped to the reference face (as parry's and
+/// Box2D's polygon manifolds clip the most anti-parallel face): the second point, a little apart
+/// or already touching, lets rapier's solver see the rest of a face that a turning body brings
+/// in, where one point would leave it blind until the faces meet.
+pub(crate) const FACING_FACES_MAX_ANGLE: f64 = core::f64::consts::FRAC_PI_4;
 
 /// Stack room for the vertices and normals of a parry box, triangle, segment or capsule.
 #[derive(Default)]
@@ -147,7 +153,7 @@ pub(crate) fn exact_contact(pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape, hint: 
     let (mut st1, mut st2) = (SupportScratch::default(), SupportScratch::default());
     let s1 = support_shape(g1, &mut st1)?;
     let s2 = support_shape(g2, &mut st2)?;
-    contact(s1, s2, pos12, FLAT_FEATURE_MAX_ANGLE.cos(), hint)
+    contact(s1, s2, pos12, FACING_FACES_MAX_ANGLE.cos(), hint)
 }
 
 /// [`exact_contact`] of two shapes already read by [`support_shape`].
@@ -160,5 +166,5 @@ pub(crate) fn exact_contact_of(
     if !input_guard::pose_ok(pos12) {
         return None;
     }
-    contact(s1, s2, pos12, FLAT_FEATURE_MAX_ANGLE.cos(), hint)
+    contact(s1, s2, pos12, FACING_FACES_MAX_ANGLE.cos(), hint)
 }

@@ -9,9 +9,12 @@
 //!
 //! where c₁ is object1's rotation centre (its `local_center`), β = α₁ − α₂ the relative angle
 //! (β' = ω = ω₁ − ω₂) and q(t) = R(−α₂)(C₁ − C₂) + c₂ the position of object1's rotation centre
-//! (C₁, C₂ the world rotation centres, moving linearly). q' and q'' follow from
-//! Q = R(−α₂)ΔC: Q' = −ω₂Q⊥ + V, Q'' = −ω₂²Q − 2ω₂V⊥ with V = R(−α₂)ΔC'.
+//! (C₁, C₂ the world rotation centres, moving linearly: ΔC = ΔC₀ + ΔV·τ(t) with τ the path's
+//! translation clock, τ(t) = t for parry's motions, `numerics::clock`). q' and q'' follow from
+//! Q = R(−α₂)ΔC: Q' = −ω₂Q⊥ + V, Q'' = −ω₂²Q − 2ω₂V⊥ + R(−α₂)ΔC'' with V = R(−α₂)ΔC',
+//! ΔC' = ΔV·τ', ΔC'' = ΔV·τ''.
 
+use crate::numerics::clock::{Clock, ClockBounds, ClockExt};
 use crate::numerics::math::{perp, Pose, Vector};
 use parry2d_f64::query::NonlinearRigidMotion;
 
@@ -118,6 +121,9 @@ pub struct RelativeMotion {
     dv: Vector,
     center1: Vector,
     center2: Vector,
+    /// The translation clock of the path (`numerics::clock`): `None` for parry's motions, where
+    /// the centres move on time itself.
+    clock: Option<Clock>,
 }
 
 /// The unit complex number of a rotation (normalised: parry's rotations are unit up to rounding,
@@ -153,7 +159,20 @@ impl RelativeMotion {
             dv: m1.linvel - m2.linvel,
             center1: m1.local_center,
             center2: m2.local_center,
+            clock: None,
         }
+    }
+
+    /// The same motion with the rotation centres moving on `clock` (the nlerp path; the rotations
+    /// stay uniform): C₁(t) − C₂(t) = ΔC₀ + ΔV·τ(t).
+    pub(crate) fn with_clock(mut self, clock: Option<Clock>) -> Self {
+        self.clock = clock;
+        self
+    }
+
+    /// Bounds of the clock's derivatives between `ta` and `tb` (the identity's without a clock).
+    pub(crate) fn clock_bounds(&self, ta: f64, tb: f64) -> ClockBounds {
+        self.clock.bounds_over(ta, tb)
     }
 
     /// Object2's angular velocity.
@@ -161,12 +180,16 @@ impl RelativeMotion {
         self.omega2
     }
 
-    /// World-frame offset between the rotation centres, C₁(t) − C₂(t) = ΔC₀ + ΔV·t.
+    /// World-frame offset between the rotation centres, C₁(t) − C₂(t) = ΔC₀ + ΔV·τ(t) (τ(t) = t
+    /// without a clock).
     pub fn center_offset(&self, t: f64) -> Vector {
-        self.dc0 + self.dv * t
+        match &self.clock {
+            None => self.dc0 + self.dv * t,
+            Some(c) => self.dc0 + self.dv * c.jet(t).tau,
+        }
     }
 
-    /// Relative linear velocity ΔV of the rotation centres (world frame).
+    /// Relative linear velocity ΔV of the rotation centres (world frame), per unit of the clock.
     pub fn center_velocity(&self) -> Vector {
         self.dv
     }
@@ -189,11 +212,17 @@ impl RelativeMotion {
         };
         // R(−α₂) v = (c v_x + s v_y, −s v_x + c v_y)
         let rinv = |v: Vector| crate::numerics::math::rotate_cs(c2, -s2, v);
-        let big_q = rinv(self.dc0 + self.dv * t);
-        let v = rinv(self.dv);
         let w2 = self.omega2;
+        let jet = self.clock.map(|c| c.jet(t));
+        let (big_q, v) = match jet {
+            None => (rinv(self.dc0 + self.dv * t), rinv(self.dv)),
+            Some(j) => (rinv(self.dc0 + self.dv * j.tau), rinv(self.dv) * j.d1),
+        };
         let q_t = -perp(big_q) * w2 + v;
-        let q_tt = -big_q * (w2 * w2) - perp(v) * (2.0 * w2);
+        let mut q_tt = -big_q * (w2 * w2) - perp(v) * (2.0 * w2);
+        if let Some(j) = jet {
+            q_tt += rinv(self.dv) * j.d2;
+        }
         PairFrame {
             cos_b: cb,
             sin_b: sb,

@@ -70,6 +70,7 @@ mod rounded_polygon;
 
 pub use features::FLAT_FEATURE_MAX_ANGLE;
 pub(crate) use features::{face_id, vertex_id};
+pub(crate) use mass::capsule_ellipse_moments;
 
 use crate::curve::ConvexCurve;
 use crate::numerics::math::{Real, Vector};

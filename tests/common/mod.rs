@@ -8,6 +8,8 @@
 //! * [`scenes`]: the rapier scenes (the mixed pile, the box pile, the wall shots);
 //! * [`resting`]: resting quality — two stacks and a slope, exact and parry variants, the pile at rest;
 //! * [`appendix_d`]: the specification's Appendix D scene;
+//! * [`ccd_scenes`], [`ccd_judge`]: the CCD scene suite (game-like scenes, both methods) and its
+//!   judge (bodies through, frozen, NaN, panics, depth after a sweep, step time);
 //! * [`watched`]: a dispatcher that passes every query on and reports it (the threads that call
 //!   it, the time of each manifold query).
 //!
@@ -16,6 +18,8 @@
 #![allow(dead_code)]
 
 pub mod appendix_d;
+pub mod ccd_judge;
+pub mod ccd_scenes;
 pub mod reference;
 pub mod resting;
 pub mod rng;

@@ -43,6 +43,7 @@
 
 use core::f64::consts::{PI, TAU};
 use parry2d_f64::math::{Pose, Vector};
+use parry2d_f64::query::sweep_toi::Sweep;
 use parry2d_f64::query::NonlinearRigidMotion;
 use smooth_ccd2d::ConvexCurve;
 
@@ -298,6 +299,11 @@ pub struct RefToiOptions {
     /// direction n of the current gap sample instead of V (default true; both are rigorous, V_n
     /// ≤ V, and V_n makes translational grazes converge like Newton steps).
     pub directional: bool,
+    /// Follow the nlerp path between the motions' poses at the window's ends (parry's
+    /// `Sweep::transform_at`, rapier's clamp) instead of the motions themselves (default false).
+    /// The rate bounds then take each body's largest nlerp angular speed, 2|tan(Δ/2)|/T for a
+    /// turn Δ (wrapped into [−π, π)) over a window of length T.
+    pub nlerp: bool,
 }
 
 impl Default for RefToiOptions {
@@ -308,6 +314,7 @@ impl Default for RefToiOptions {
             resample_every: 256,
             lower_bound_slack: 0.05,
             directional: true,
+            nlerp: false,
         }
     }
 }
@@ -385,16 +392,21 @@ struct Pair<'a> {
     s2: &'a dyn ConvexCurve,
     m2: NonlinearRigidMotion,
     evals: u64,
+    /// The nlerp sweeps of the two bodies over the window (t0, 1/T), when the path is nlerp.
+    sweeps: Option<([Sweep; 2], f64, f64)>,
 }
 
 impl Pair<'_> {
+    fn pose(&self, k: usize, t: f64) -> Pose {
+        match &self.sweeps {
+            Some((sw, t0, inv_t)) => sw[k].transform_at((t - t0) * inv_t),
+            None if k == 0 => self.m1.position_at_time(t),
+            None => self.m2.position_at_time(t),
+        }
+    }
+
     fn gap_at(&self, t: f64) -> Gap<'_> {
-        Gap::new(
-            self.s1,
-            self.m1.position_at_time(t),
-            self.s2,
-            self.m2.position_at_time(t),
-        )
+        Gap::new(self.s1, self.pose(0, t), self.s2, self.pose(1, t))
     }
 
     /// Precise distance at `t`: cold full search.
@@ -470,7 +482,26 @@ pub fn reference_toi_with(
     target: f64,
     opts: &RefToiOptions,
 ) -> RefToi {
-    let v = speed_bound(shape1, motion1, shape2, motion2);
+    let window = (t1 - t0).max(f64::MIN_POSITIVE);
+    // On the nlerp path each body turns at most at 2|tan(Δ/2)|/T (at the middle of the window).
+    let rate = |m: &NonlinearRigidMotion| {
+        if opts.nlerp {
+            let d = (m.angvel * window + PI).rem_euclid(TAU) - PI;
+            2.0 * (0.5 * d).tan().abs() / window
+        } else {
+            m.angvel.abs()
+        }
+    };
+    let (w1, w2) = (rate(motion1), rate(motion2));
+    let r1 = shape1.bounding_radius() + motion1.local_center.length();
+    let r2 = shape2.bounding_radius() + motion2.local_center.length();
+    let v = (motion1.linvel - motion2.linvel).length() + w1 * r1 + w2 * r2;
+    let sweeps = opts.nlerp.then(|| {
+        let sweep = |m: &NonlinearRigidMotion| {
+            Sweep::from_poses(&m.position_at_time(t0), &m.position_at_time(t1), m.local_center)
+        };
+        ([sweep(motion1), sweep(motion2)], t0, 1.0 / window)
+    });
     let tol = opts.tol_rel * pair_size(shape1, shape2);
     let mut search = Search {
         pair: Pair {
@@ -479,6 +510,7 @@ pub fn reference_toi_with(
             s2: shape2,
             m2: *motion2,
             evals: 0,
+            sweeps,
         },
         opts: *opts,
         t0,
@@ -488,8 +520,7 @@ pub fn reference_toi_with(
         window: (t1 - t0).max(f64::MIN_POSITIVE),
         v,
         v_rel: motion2.linvel - motion1.linvel,
-        w_rot: motion1.angvel.abs() * (shape1.bounding_radius() + motion1.local_center.length())
-            + motion2.angvel.abs() * (shape2.bounding_radius() + motion2.local_center.length()),
+        w_rot: w1 * r1 + w2 * r2,
         res: RefToi {
             outcome: RefOutcome::Miss,
             start_gap: 0.0,

@@ -2,7 +2,8 @@
 //! and the gap G(θ, t) along an axis with its derivatives in (θ, t).
 //!
 //! Body X (rotation centre Cₓ(t) = Cₓ(0) + Vₓt, angle αₓ(t) = αₓ(0) + ωₓt, as parry's
-//! `NonlinearRigidMotion`) maps its body point p to Cₓ(t) + R(αₓ)(p − cₓ), cₓ its local rotation
+//! `NonlinearRigidMotion`; on the nlerp path the centres run on the clock τ(t) instead of t,
+//! `numerics::clock`, ΔV below becoming ΔC′ = ΔV·τ′ and G_tt gaining −ΔC″·u) maps its body point p to Cₓ(t) + R(αₓ)(p − cₓ), cₓ its local rotation
 //! centre. For the unit world axis u = (cos θ, sin θ), pointing from body 1 to body 2,
 //!
 //! ```text
@@ -23,6 +24,7 @@
 // The negated comparisons (`!(x > 0.0)`) are deliberate: they are true for NaN.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
+use crate::numerics::clock::{Clock, ClockBounds, ClockExt};
 use crate::numerics::math::{perp, rotate_cs, sin_cos, Vector};
 use crate::numerics::motion::{compose, unit_cs};
 use parry2d_f64::query::NonlinearRigidMotion;
@@ -39,6 +41,9 @@ pub(crate) struct GapMotion {
     pub dv: Vector,
     /// Each body's rotation centre in its own frame (`local_center`).
     pub centre: [Vector; 2],
+    /// The translation clock of the path (`numerics::clock`): ΔC(t) = ΔC(0) + ΔV·τ(t); `None`
+    /// for parry's motions (τ(t) = t).
+    pub clock: Option<Clock>,
 }
 
 /// The bodies at one time.
@@ -50,6 +55,9 @@ pub(crate) struct GapFrame {
     pub rot: [(f64, f64); 2],
     /// ΔC = C₁ − C₂ (world).
     pub dc: Vector,
+    /// ΔC′ and ΔC″ (ΔV and 0 for parry's motions; ΔV·τ′ and ΔV·τ″ on a clock).
+    pub dc_t: Vector,
+    pub dc_tt: Vector,
 }
 
 impl GapMotion {
@@ -61,13 +69,28 @@ impl GapMotion {
             dc0: m1.start * m1.local_center - m2.start * m2.local_center,
             dv: m1.linvel - m2.linvel,
             centre: [m1.local_center, m2.local_center],
+            clock: None,
         }
+    }
+
+    /// The same motions with the rotation centres on `clock` (the nlerp path).
+    pub(crate) fn with_clock(mut self, clock: Option<Clock>) -> Self {
+        self.clock = clock;
+        self
     }
 
     /// ΔC(t).
     #[inline]
     pub(crate) fn dc(&self, t: f64) -> Vector {
-        self.dc0 + self.dv * t
+        match &self.clock {
+            None => self.dc0 + self.dv * t,
+            Some(c) => self.dc0 + self.dv * c.jet(t).tau,
+        }
+    }
+
+    /// Bounds of the clock's derivatives between `ta` and `tb`.
+    pub(crate) fn clock_bounds(&self, ta: f64, tb: f64) -> ClockBounds {
+        self.clock.bounds_over(ta, tb)
     }
 
     /// The bodies at time `t`.
@@ -81,10 +104,19 @@ impl GapMotion {
                 compose(self.rot0[k], (c, s))
             }
         };
+        let (dc, dc_t, dc_tt) = match &self.clock {
+            None => (self.dc0 + self.dv * t, self.dv, Vector::ZERO),
+            Some(c) => {
+                let j = c.jet(t);
+                (self.dc0 + self.dv * j.tau, self.dv * j.d1, self.dv * j.d2)
+            }
+        };
         GapFrame {
             time: t,
             rot: [rot(0), rot(1)],
-            dc: self.dc(t),
+            dc,
+            dc_t,
+            dc_tt,
         }
     }
 }
@@ -157,13 +189,17 @@ impl GapJet {
     pub(crate) fn new(motion: &GapMotion, fr: &GapFrame, u: Vector, s1: &SupportValue, s2: &SupportValue) -> Self {
         let up = perp(u);
         let [w1, w2] = motion.omega;
+        let mut g_tt = -w1 * w1 * s1.h2 - w2 * w2 * s2.h2;
+        if motion.clock.is_some() {
+            g_tt -= fr.dc_tt.dot(u);
+        }
         GapJet {
             g: -fr.dc.dot(u) - s1.h - s2.h,
             g_th: -fr.dc.dot(up) - s1.h1 - s2.h1,
             g_thth: fr.dc.dot(u) - s1.h2 - s2.h2,
-            g_t: -motion.dv.dot(u) + w1 * s1.h1 + w2 * s2.h1,
-            g_tht: -motion.dv.dot(up) + w1 * s1.h2 + w2 * s2.h2,
-            g_tt: -w1 * w1 * s1.h2 - w2 * w2 * s2.h2,
+            g_t: -fr.dc_t.dot(u) + w1 * s1.h1 + w2 * s2.h1,
+            g_tht: -fr.dc_t.dot(up) + w1 * s1.h2 + w2 * s2.h2,
+            g_tt,
         }
     }
 

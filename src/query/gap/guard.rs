@@ -6,7 +6,9 @@
 //! lower bound on D(tₖ + s). Its three terms (module docs of `frame`):
 //!
 //! * −ΔC·u: a known function of s (ΔC is affine in time): its first two derivatives at 0 are
-//!   exact and |λ|³·max|ΔC| + 3λ²|ΔV| bounds its third (max over the step's ends);
+//!   exact and |λ|³·max|ΔC| + 3λ²|ΔV| bounds its third (max over the step's ends); on the nlerp
+//!   path's clock (ΔC = ΔC₀ + ΔV·τ) the second derivative gains −ΔV·τ″·u and the third's bound
+//!   reads |λ|³·max|ΔC| + 3λ²|ΔV|·max τ′ + 3|λ||ΔV|·max|τ″| + |ΔV|·max|τ‴|;
 //! * −h̃ₓ(ψₓ(s)) for each body, with ψₓ turning at wₓ = λ − ωₓ. h̃ₓ(m) = max over the body's
 //!   support points p of (p − cₓ)·m, and over the step only the points whose normals the
 //!   direction sweeps can be support points: the arc A from the support at m₀ to the support at
@@ -225,7 +227,7 @@ impl Pair<'_> {
         let up = perp(u);
         let mo = &self.motion;
         let lam = dir * lambda;
-        let dv = mo.dv * dir;
+        let dv = fr.dc_t * dir;
         let dc_end = mo.dc(fr.time + dir * span);
         let dc_max = fr.dc.length().max(dc_end.length());
         let mut b = Bound {
@@ -233,6 +235,15 @@ impl Pair<'_> {
             a2: lam * lam * fr.dc.dot(u) - 2.0 * lam * dv.dot(up),
             a3: lam.abs().powi(3) * dc_max + 3.0 * lam * lam * dv.length(),
         };
+        if mo.clock.is_some() {
+            // On a clock: ΔC″ = ΔV·τ″ enters the second derivative exactly, and the third is
+            // bounded with the clock's bounds over the span, |ΔC‴| + 3|λ||ΔC″| + 3λ²|ΔC′| +
+            // |λ|³|ΔC| (the λ² term taking the largest |ΔC′| instead of its value at s = 0).
+            let cb = mo.clock_bounds(fr.time, fr.time + dir * span);
+            let v = mo.dv.length();
+            b.a2 -= fr.dc_tt.dot(u);
+            b.a3 = lam.abs().powi(3) * dc_max + 3.0 * lam * lam * v * cb.d1 + 3.0 * lam.abs() * v * cb.d2 + v * cb.d3;
+        }
         for (k, r_k) in radius.into_iter().enumerate() {
             let w = lam - dir * mo.omega[k];
             if w == 0.0 {

@@ -57,6 +57,7 @@ pub(crate) use side::{CurveSide, PolySide, Side};
 
 use crate::error::{finite, QueryError};
 use crate::numerics::math::Vector;
+use crate::query::path::OnPath;
 use crate::query::toi::{TimeOfImpact, ToiOptions};
 use parry2d_f64::query::NonlinearRigidMotion;
 use tracker::GapTracker;
@@ -72,7 +73,29 @@ pub(crate) fn gap_time_of_impact(
     end_time: f64,
     options: &ToiOptions,
 ) -> Result<TimeOfImpact, QueryError> {
-    finite(GapTracker::new(side1, motion1, side2, motion2, start_time, end_time, options)?.run())
+    let p = OnPath::new(motion1, motion2, start_time, end_time, options.path)?;
+    let tracker = GapTracker::new(side1, &p.m1, side2, &p.m2, start_time, end_time, options, p.clock)?;
+    finite(tracker.run().map(|r| p.answer(r)))
+}
+
+/// The first time in `[start_time, end_time]` at which the signed distance of `side1` moving by
+/// `motion1` and `side2` moving by `motion2` comes down to `level`, of any sign (a negative
+/// level: the shapes interpenetrate by −level), as [`gap_time_of_impact`] with that target. The
+/// rest of `options` (tolerances, caps, `stop_at_penetration`) applies as there.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn gap_time_to_level(
+    side1: Side<'_>,
+    motion1: &NonlinearRigidMotion,
+    side2: Side<'_>,
+    motion2: &NonlinearRigidMotion,
+    start_time: f64,
+    end_time: f64,
+    level: f64,
+    options: &ToiOptions,
+) -> Result<TimeOfImpact, QueryError> {
+    let p = OnPath::new(motion1, motion2, start_time, end_time, options.path)?;
+    let tracker = GapTracker::new(side1, &p.m1, side2, &p.m2, start_time, end_time, options, p.clock)?;
+    finite(tracker.with_level(level).run().map(|r| p.answer(r)))
 }
 
 /// The signed distance of `side1` and `side2` with `side2` at `pos12` in `side1`'s frame

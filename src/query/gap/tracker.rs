@@ -9,6 +9,7 @@ use super::frame::{GapFrame, GapMotion};
 use super::maxgap::{Contact, GapMax, Pair};
 use super::side::Side;
 use crate::error::QueryError;
+use crate::numerics::clock::Clock;
 use crate::numerics::math::{rotate_cs, sin_cos, Vector};
 use crate::query::stepping::{
     check_window, parabola_step, LeaveWalk, CONTACT_FLOOR, EXTENSION, EXTENSION_MARGIN, EXTENSION_ROUNDS, FINE,
@@ -60,6 +61,7 @@ pub(crate) struct GapTracker<'a> {
 
 impl<'a> GapTracker<'a> {
     /// A query of `side1` moving by `m1` against `side2` moving by `m2` over `[t0, t1]`.
+    #[allow(clippy::too_many_arguments)]
     pub(crate) fn new(
         side1: Side<'a>,
         m1: &NonlinearRigidMotion,
@@ -68,6 +70,7 @@ impl<'a> GapTracker<'a> {
         t0: f64,
         t1: f64,
         opts: &ToiOptions,
+        clock: Option<Clock>,
     ) -> Result<Self, QueryError> {
         check_window(m1, m2, t0, t1, opts)?;
         let size = side1.radius_about(Vector::ZERO).max(side2.radius_about(Vector::ZERO));
@@ -91,7 +94,7 @@ impl<'a> GapTracker<'a> {
         Ok(GapTracker {
             pair: Pair {
                 sides: [side1, side2],
-                motion: GapMotion::new(m1, m2),
+                motion: GapMotion::new(m1, m2).with_clock(clock),
             },
             t0,
             t1,
@@ -104,6 +107,15 @@ impl<'a> GapTracker<'a> {
             n_lambdas,
             cost: ToiCost::default(),
         })
+    }
+
+    /// Tracks the signed distance down to `level` instead of the options' target distance: any
+    /// sign, a negative level being a penetration depth (the distance at each time is the exact
+    /// signed distance, and the guard's bound holds at any level).
+    pub(crate) fn with_level(mut self, level: f64) -> Self {
+        self.reach += level - self.opts.target_distance;
+        self.opts.target_distance = level;
+        self
     }
 
     /// The exact maximum at time `t`, walking from the axis `u` with the supports `hint`.
@@ -137,7 +149,15 @@ impl<'a> GapTracker<'a> {
 
     /// True when the bounding circles about the rotation centres stay apart on [t, t1].
     fn parted_for_rest(&self, t: f64) -> bool {
-        circles_stay_apart(self.pair.motion.dc(t), self.pair.motion.dv, self.t1 - t, self.reach)
+        let mo = &self.pair.motion;
+        let offset = mo.dc(t);
+        // On a clock the centres still cover their straight segment from t to t1, only unevenly.
+        let velocity = match mo.clock {
+            None => mo.dv,
+            Some(_) if self.t1 > t => (mo.dc(self.t1) - offset) / (self.t1 - t),
+            Some(_) => Vector::ZERO,
+        };
+        circles_stay_apart(offset, velocity, self.t1 - t, self.reach)
     }
 
     /// The longest guard step from `p` with gap `gap` (to the level the guard keeps) within

@@ -15,7 +15,11 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
     /// axis (λ = 0) is affine in t and M = 0 exactly. Returns (M, λ).
     pub(super) fn guard_bound(&self, t: f64, h: f64, local: Option<&PairJet>) -> (f64, f64) {
         let (w1, w2) = (self.omega1, self.rel.omega2());
-        if w1 == 0.0 && w2 == 0.0 {
+        // On a clock (the nlerp path) ΔC' = ΔV·τ' and ΔC'' = ΔV·τ'': |ΔV| becomes its largest
+        // |ΔC'| over the step, and g'' gains −ΔC''·n, at most |ΔV|·max|τ''| (module docs of
+        // `numerics::clock`).
+        let clock = self.rel.clock_bounds(t, t + h);
+        if w1 == 0.0 && w2 == 0.0 && clock.d2 == 0.0 {
             // Neither turns: along the fixed axis λ = 0 the gap is affine in t, g'' = 0.
             return (0.0, 0.0);
         }
@@ -26,7 +30,8 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
             .length_squared()
             .max(self.rel.center_offset(t + h).length_squared())
             .sqrt();
-        let dv = self.dv_len;
+        let dv = self.dv_len * clock.d1;
+        let dc_dd = self.dv_len * clock.d2;
         // The axis turns at λ − ωᵢ against shape i; the optimal λ lies between 0, ω₁ and ω₂,
         // so over [t, t + h] the directions stay within these angles of the current ones.
         let sweep2 = if self.obj1_convex {
@@ -38,7 +43,10 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
             Some(j) => self.obj2.support_dd_bound_near(-j.normal_in_2, sweep2),
             None => self.h2_global,
         } + self.c2_len;
-        let m_body = w * w * h2 + 2.0 * w1.abs() * dv + w1 * w1 * dc;
+        let mut m_body = w * w * h2 + 2.0 * w1.abs() * dv + w1 * w1 * dc;
+        if self.clock {
+            m_body += dc_dd;
+        }
         let mut best = (m_body, w1);
         if self.obj1_convex {
             let sweep1 = w1.abs().max(w.abs()) * h;
@@ -46,7 +54,14 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
                 Some(j) => self.obj1.support_dd_bound_near(j.curve1.normal, sweep1),
                 None => self.h1_global,
             } + self.c1_len;
-            let m_at = |l: f64| l * l * dc + 2.0 * l.abs() * dv + (l - w1) * (l - w1) * h1 + (l - w2) * (l - w2) * h2;
+            let m_at = |l: f64| {
+                let m = l * l * dc + 2.0 * l.abs() * dv + (l - w1) * (l - w1) * h1 + (l - w2) * (l - w2) * h2;
+                if self.clock {
+                    m + dc_dd
+                } else {
+                    m
+                }
+            };
             let den = dc + h1 + h2;
             if den > 0.0 {
                 // M is a convex quadratic on each side of λ = 0: its minimiser on each side.

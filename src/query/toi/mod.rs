@@ -107,6 +107,7 @@ pub use types::{TimeOfImpact, ToiCost, ToiOptions, ToiStatus, TraceEvent};
 use crate::curve::ConvexCurve;
 use crate::error::{finite, QueryError};
 use crate::numerics::motion::{PairFrame, RelativeMotion};
+use crate::query::path::OnPath;
 use parry2d_f64::query::NonlinearRigidMotion;
 
 /// The time of impact of `shape1` moving by `motion1` and `shape2` moving by `motion2` in
@@ -186,13 +187,17 @@ fn toi_roles<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized, T: Tracer>(
     options: &ToiOptions,
     trace: &mut T,
 ) -> Result<TimeOfImpact, QueryError> {
+    if !(shape2.is_strictly_convex() || shape1.is_strictly_convex()) {
+        return Err(QueryError::NotStrictlyConvex);
+    }
+    let p = OnPath::new(motion1, motion2, start_time, end_time, options.path)?;
+    let (m1, m2) = (&p.m1, &p.m2);
     if shape2.is_strictly_convex() {
-        Tracker::new(shape1, motion1, shape2, motion2, start_time, end_time, options)?.run(trace)
-    } else if shape1.is_strictly_convex() {
-        let r = Tracker::new(shape2, motion2, shape1, motion1, start_time, end_time, options)?.run(trace)?;
-        Ok(r.swapped())
+        let r = Tracker::new(shape1, m1, shape2, m2, start_time, end_time, options, p.clock)?.run(trace)?;
+        Ok(p.answer(r))
     } else {
-        Err(QueryError::NotStrictlyConvex)
+        let r = Tracker::new(shape2, m2, shape1, m1, start_time, end_time, options, p.clock)?.run(trace)?;
+        Ok(p.answer(r.swapped()))
     }
 }
 
@@ -233,4 +238,6 @@ struct Tracker<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> {
     cost: ToiCost,
     /// The frame at the last time asked for ([`Tracker::frame`]).
     last_frame: PairFrame,
+    /// The rotation centres run on a clock (the nlerp path, `numerics::clock`).
+    clock: bool,
 }

@@ -59,7 +59,7 @@ fn guard_parabola_bounds_the_gap_along_the_turning_axis() {
             // Only object2 turns: a bound is needed (M = 0 here would be wrong).
             m1.angvel = 0.0;
         }
-        let tr = Tracker::new(o1, &m1, o2, &m2, 0.0, 1.0, &ToiOptions::default()).unwrap();
+        let tr = Tracker::new(o1, &m1, o2, &m2, 0.0, 1.0, &ToiOptions::default(), None).unwrap();
         spin_free += usize::from(tr.omega1 == 0.0 && tr.rel.omega2() == 0.0);
         spun_disc += usize::from(tr.spin2 != 0.0);
         let t = rng.range(0.0, 0.5);

@@ -9,6 +9,7 @@ use super::{TimeOfImpact, ToiCost, ToiStatus, TraceEvent, Tracer, Tracker};
 use crate::curve::ConvexCurve;
 use crate::error::QueryError;
 use crate::numerics::angle::wrap_phi;
+use crate::numerics::clock::Clock;
 use crate::numerics::math::{rotate_cs, sin_cos, Vector};
 use crate::numerics::motion::{PairFrame, RelativeMotion};
 use crate::query::pair::PairJet;
@@ -71,6 +72,9 @@ pub(super) struct StepPlan {
 }
 
 impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
+    /// The query of `obj1` moving by `m1` against `obj2` moving by `m2` over [`t0`, `t1`], the
+    /// rotation centres running on `clock` (the nlerp path; `None`: parry's motions).
+    #[allow(clippy::too_many_arguments)]
     pub(super) fn new(
         obj1: &'a A,
         m1: &NonlinearRigidMotion,
@@ -79,6 +83,7 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
         t0: f64,
         t1: f64,
         opts: &ToiOptions,
+        clock: Option<Clock>,
     ) -> Result<Self, QueryError> {
         check_window(m1, m2, t0, t1, opts)?;
         // A disc centred at its origin and spinning about it (support_dd_bound() = 0: h'' ≡ 0,
@@ -93,7 +98,8 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
             RelativeMotion::new(m1, &NonlinearRigidMotion { angvel: 0.0, ..*m2 })
         } else {
             RelativeMotion::new(m1, m2)
-        };
+        }
+        .with_clock(clock);
         let size = obj1.bounding_radius().max(obj2.bounding_radius());
         let (c1, c2) = rel.centers();
         let reach = circles_reach(
@@ -128,17 +134,25 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
             spin2,
             cost: ToiCost::default(),
             last_frame: rel.frame(t0),
+            clock: clock.is_some(),
         })
     }
 
     /// True when the bounding circles about the rotation centres stay apart on [t, t1].
     pub(super) fn parted_for_rest(&self, t: f64) -> bool {
-        circles_stay_apart(
-            self.rel.center_offset(t),
-            self.rel.center_velocity(),
-            self.t1 - t,
-            self.reach,
-        )
+        let offset = self.rel.center_offset(t);
+        // On a clock the centres still cover their straight segment from t to t1, only unevenly.
+        let velocity = if self.clock {
+            let span = self.t1 - t;
+            if span > 0.0 {
+                (self.rel.center_offset(self.t1) - offset) / span
+            } else {
+                Vector::ZERO
+            }
+        } else {
+            self.rel.center_velocity()
+        };
+        circles_stay_apart(offset, velocity, self.t1 - t, self.reach)
     }
 
     /// φ of an accepted point brought back into [−π, π) (the whole turns removed are counted

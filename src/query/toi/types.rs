@@ -4,6 +4,7 @@
 use crate::error::QueryError;
 use crate::error::{tolerance_ok, AllFinite};
 use crate::numerics::math::Vector;
+use crate::query::path::MotionPath;
 use crate::query::stationary::DistanceOptions;
 
 /// Tolerances, caps and switches of [`crate::time_of_impact`]. Distances are relative to the size s
@@ -39,6 +40,9 @@ pub struct ToiOptions {
     pub stop_at_penetration: bool,
     /// Options of the stationary distance used at the start and to recover.
     pub distance: DistanceOptions,
+    /// The path the bodies take between the window's end poses (default
+    /// [`MotionPath::ConstantSpin`], parry's motion itself).
+    pub path: MotionPath,
 }
 
 impl Default for ToiOptions {
@@ -52,6 +56,7 @@ impl Default for ToiOptions {
             max_corrector_iterations: 30,
             stop_at_penetration: true,
             distance: DistanceOptions::default(),
+            path: MotionPath::ConstantSpin,
         }
     }
 }
@@ -270,6 +275,12 @@ impl ToiOptions {
     /// With these options of the stationary distance (at the start and to recover).
     pub fn with_distance_options(mut self, distance: DistanceOptions) -> Self {
         self.distance = distance;
+        self
+    }
+
+    /// On this path ([`MotionPath`]).
+    pub fn with_path(mut self, path: MotionPath) -> Self {
+        self.path = path;
         self
     }
 

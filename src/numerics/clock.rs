@@ -1,0 +1,261 @@
+//! The translation clock of a motion path: when the rotation is uniform in time, how far the
+//! translation has got. For parry's `NonlinearRigidMotion` (constant spin, constant velocity) the
+//! clock is time itself; for the *nlerp path* ([`crate::MotionPath::Nlerp`], parry's `Sweep` and
+//! rapier's clamp: the rotation centre moves on a straight line at constant speed while the
+//! rotation is a normalised linear interpolation between the window's end rotations) it runs
+//! unevenly.
+//!
+//! ## The nlerp path in a uniform-rotation clock
+//!
+//! Let the rotation turn by Δ over the window (|Δ| < π: nlerp takes the short way round), k =
+//! tan(Δ/2). At the fraction s of the window the nlerp rotation is the direction of the chord
+//! point (1 − s)·q₀ + s·q₁; measured from the chord's midpoint direction its angle w satisfies
+//! tan w = (2s − 1)·k, so the rotation angle is Δ/2 + w. Read the other way, with u the fraction
+//! of the rotation done (angle u·Δ, w = (2u − 1)·Δ/2), the translation has done the fraction
+//!
+//! ```text
+//! σ(u) = ½ + ½·tan(w)/k,          σ(0) = 0, σ(1) = 1, σ increasing,
+//! σ'(u)   = (Δ/2k)·sec²w,
+//! σ''(u)  = (Δ²/k)·sec²w·tan w,
+//! σ'''(u) = (Δ³/k)·sec²w·(1 + 3 tan²w).
+//! ```
+//!
+//! So the nlerp path *is* a rigid motion with uniform rotation (angular velocity Δ/T over a
+//! window of length T) whose rotation centre runs along its straight segment on the clock
+//! τ(t) = t₀ + T·σ((t − t₀)/T). The trackers take the clock's value and first two derivatives at
+//! each time and bounds of its first three derivatives over a step: |σ'|, |σ''| and |σ'''| grow
+//! with |w|, so over an interval of u their largest values sit at the end with the larger |w|.
+//! A contact found at the clock time t is at the path's fraction σ((t − t₀)/T), the time rapier
+//! clamps to.
+//!
+//! As |Δ| → π the nlerp rotation concentrates in the middle of the window (k → ∞): σ stays near
+//! ½ for most of the rotation and its derivatives at the ends grow like sec²(Δ/2). The paths
+//! with |Δ| within [`NLERP_HALF_TURN`] of π are not clocked this way ([`Clock::nlerp`] answers
+//! `None`); the caller splits them (`query::path`).
+
+use core::f64::consts::PI;
+
+/// Turns Δ within this many radians of a half turn are split by the caller instead of clocked:
+/// there σ′ at the window's ends exceeds about 1/NLERP_HALF_TURN² (the nlerp rotation happens
+/// almost at once in the middle of the window), and the guards' steps would shrink with it.
+pub(crate) const NLERP_HALF_TURN: f64 = 1e-3;
+
+/// A translation clock (module docs): identity, or the nlerp path's σ over a window.
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub(crate) struct Clock {
+    /// Window start and 1/T.
+    t0: f64,
+    inv_t: f64,
+    /// T.
+    span: f64,
+    /// Δ/2 and k = tan(Δ/2).
+    half: f64,
+    k: f64,
+}
+
+/// The clock's value and first two derivatives at one time: τ, τ′ = dτ/dt, τ″.
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub(crate) struct ClockJet {
+    pub tau: f64,
+    pub d1: f64,
+    pub d2: f64,
+}
+
+/// Bounds over an interval of the clock's first three derivatives (in time): max τ′, max |τ″|,
+/// max |τ‴|.
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub(crate) struct ClockBounds {
+    pub d1: f64,
+    pub d2: f64,
+    pub d3: f64,
+}
+
+impl ClockBounds {
+    /// The identity clock's: τ′ = 1, τ″ = τ‴ = 0.
+    pub(crate) const IDENTITY: ClockBounds = ClockBounds {
+        d1: 1.0,
+        d2: 0.0,
+        d3: 0.0,
+    };
+}
+
+impl Clock {
+    /// The clock of the nlerp path that turns by `delta` (radians, |Δ| < π) over the window
+    /// [`t0`, `t1`]; `None` when the path needs no clock (Δ = 0, an empty window) or cannot have
+    /// one (|Δ| within [`NLERP_HALF_TURN`] of π, or not finite).
+    pub(crate) fn nlerp(delta: f64, t0: f64, t1: f64) -> Option<Clock> {
+        let span = t1 - t0;
+        if delta == 0.0 || !(span > 0.0 && span.is_finite() && delta.abs() < PI - NLERP_HALF_TURN) {
+            return None;
+        }
+        let half = 0.5 * delta;
+        Some(Clock {
+            t0,
+            inv_t: 1.0 / span,
+            span,
+            half,
+            k: half.tan(),
+        })
+    }
+
+    /// w = (2u − 1)·Δ/2 at time `t` (u clamped to [0, 1]).
+    #[inline]
+    fn w(&self, t: f64) -> f64 {
+        let u = ((t - self.t0) * self.inv_t).clamp(0.0, 1.0);
+        (2.0 * u - 1.0) * self.half
+    }
+
+    /// σ at time `t`: the fraction of the translation done.
+    #[inline]
+    pub(crate) fn fraction(&self, t: f64) -> f64 {
+        let w = self.w(t);
+        if w == -self.half {
+            return 0.0;
+        }
+        if w == self.half {
+            return 1.0;
+        }
+        0.5 + 0.5 * w.tan() / self.k
+    }
+
+    /// The clock's value and derivatives at time `t`.
+    #[inline]
+    pub(crate) fn jet(&self, t: f64) -> ClockJet {
+        let w = self.w(t);
+        let tw = w.tan();
+        let sec2 = 1.0 + tw * tw;
+        let sigma = if w == -self.half {
+            0.0
+        } else if w == self.half {
+            1.0
+        } else {
+            0.5 + 0.5 * tw / self.k
+        };
+        // d/dt = (1/T)·d/du.
+        let d1 = self.half / self.k * sec2;
+        let d2 = 4.0 * self.half * self.half / self.k * sec2 * tw * self.inv_t;
+        ClockJet {
+            tau: self.t0 + self.span * sigma,
+            d1,
+            d2,
+        }
+    }
+
+    /// Bounds of τ′, |τ″| and |τ‴| over the times between `ta` and `tb` (either order).
+    pub(crate) fn bounds(&self, ta: f64, tb: f64) -> ClockBounds {
+        let w = self.w(ta).abs().max(self.w(tb).abs());
+        // At the same |w| on both sides of the middle when the interval straddles it: the
+        // derivatives grow with |w|, so the end with the larger |w| bounds them.
+        let tw = w.tan();
+        let sec2 = 1.0 + tw * tw;
+        let hk = (self.half / self.k).abs();
+        let h2 = 4.0 * self.half * self.half;
+        ClockBounds {
+            d1: hk * sec2,
+            d2: h2 / self.k.abs() * sec2 * tw * self.inv_t,
+            d3: 2.0 * h2 * self.half.abs() / self.k.abs() * sec2 * (1.0 + 3.0 * tw * tw) * self.inv_t * self.inv_t,
+        }
+    }
+
+    /// The clock time at which the translation has done the fraction `s` ∈ [0, 1] (σ⁻¹).
+    pub(crate) fn time_of_fraction(&self, s: f64) -> f64 {
+        let s = s.clamp(0.0, 1.0);
+        let w = ((2.0 * s - 1.0) * self.k).atan();
+        let u = (0.5 + 0.5 * w / self.half).clamp(0.0, 1.0);
+        self.t0 + self.span * u
+    }
+
+    /// The path's time (window start + fraction × window) of the clock time `t`.
+    pub(crate) fn path_time(&self, t: f64) -> f64 {
+        self.t0 + self.span * self.fraction(t)
+    }
+}
+
+/// The clock of a path as the trackers see it: the identity (`None`) or a [`Clock`].
+pub(crate) trait ClockExt {
+    /// τ, τ′, τ″ at `t`.
+    fn jet_at(&self, t: f64) -> ClockJet;
+    /// Bounds of the derivatives between `ta` and `tb`.
+    fn bounds_over(&self, ta: f64, tb: f64) -> ClockBounds;
+}
+
+impl ClockExt for Option<Clock> {
+    #[inline]
+    fn jet_at(&self, t: f64) -> ClockJet {
+        match self {
+            None => ClockJet { tau: t, d1: 1.0, d2: 0.0 },
+            Some(c) => c.jet(t),
+        }
+    }
+
+    #[inline]
+    fn bounds_over(&self, ta: f64, tb: f64) -> ClockBounds {
+        match self {
+            None => ClockBounds::IDENTITY,
+            Some(c) => c.bounds(ta, tb),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The nlerp rotation angle at the fraction s of a turn by Δ (parry's `Sweep::transform_at`).
+    fn nlerp_angle(delta: f64, s: f64) -> f64 {
+        let (x, y) = ((1.0 - s) + s * delta.cos(), s * delta.sin());
+        y.atan2(x)
+    }
+
+    #[test]
+    fn the_clock_turns_uniformly_where_nlerp_has_done_the_fraction_sigma() {
+        for delta in [1e-6, 0.1, -0.7, core::f64::consts::FRAC_PI_4, 2.0, -3.0, 3.1] {
+            let c = Clock::nlerp(delta, 2.0, 2.5).unwrap();
+            for i in 0..=200 {
+                let u = i as f64 / 200.0;
+                let t = 2.0 + 0.5 * u;
+                let s = c.fraction(t);
+                // At the translation's fraction s, nlerp's angle is u·Δ.
+                let err = (nlerp_angle(delta, s) - u * delta).abs();
+                assert!(err <= 1e-12 * delta.abs().max(1.0), "Δ {delta} u {u}: {err}");
+                // And back.
+                assert!((c.time_of_fraction(s) - t).abs() <= 1e-9, "Δ {delta} u {u}");
+            }
+            assert_eq!(c.fraction(2.0), 0.0);
+            assert_eq!(c.fraction(2.5), 1.0);
+        }
+    }
+
+    #[test]
+    fn the_clock_derivatives_match_finite_differences_and_stay_within_their_bounds() {
+        for delta in [0.3, -1.2, 2.5] {
+            let (t0, t1) = (0.0, 0.2);
+            let c = Clock::nlerp(delta, t0, t1).unwrap();
+            let b = c.bounds(t0, t1);
+            for i in 1..100 {
+                let t = 0.2 * i as f64 / 100.0;
+                let h = 1e-6;
+                let j = c.jet(t);
+                let (jm, jp) = (c.jet(t - h), c.jet(t + h));
+                assert!((j.d1 - (jp.tau - jm.tau) / (2.0 * h)).abs() <= 1e-6 * j.d1.abs().max(1.0));
+                assert!((j.d2 - (jp.d1 - jm.d1) / (2.0 * h)).abs() <= 1e-5 * j.d2.abs().max(1.0));
+                let d3 = (jp.d2 - jm.d2) / (2.0 * h);
+                assert!(j.d1 > 0.0 && j.d1 <= b.d1 * (1.0 + 1e-12));
+                assert!(j.d2.abs() <= b.d2 * (1.0 + 1e-12));
+                assert!(d3.abs() <= b.d3 * (1.0 + 1e-6), "Δ {delta} t {t}: {d3} > {}", b.d3);
+                // Over a sub-interval the bound is the larger end's.
+                let bs = c.bounds(t, t + 0.01);
+                assert!(bs.d1 >= j.d1 * (1.0 - 1e-12) && bs.d1 <= b.d1 * (1.0 + 1e-12));
+            }
+        }
+    }
+
+    #[test]
+    fn no_clock_for_no_turn_or_a_half_turn() {
+        assert!(Clock::nlerp(0.0, 0.0, 1.0).is_none());
+        assert!(Clock::nlerp(PI, 0.0, 1.0).is_none());
+        assert!(Clock::nlerp(-PI + 1e-4, 0.0, 1.0).is_none());
+        assert!(Clock::nlerp(1.0, 1.0, 1.0).is_none());
+        assert!(Clock::nlerp(f64::NAN, 0.0, 1.0).is_none());
+    }
+}
