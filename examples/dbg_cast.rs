@@ -55,7 +55,7 @@ fn main() {
         if step < from { continue; }
         for pair in scene.world.narrow_phase.contact_pairs() {
             for m in pair.manifolds() {
-                println!("     manifold n={:?} pts={:?}", m.data.normal, m.points.iter().map(|p| (p.dist, p.local_p1, p.local_p2)).collect::<Vec<_>>());
+                println!("     manifold n={:?} solver={:?} pts={:?}", m.data.normal, m.data.solver_contacts.iter().map(|s| s.dist).collect::<Vec<_>>(), m.points.iter().map(|p| (p.dist, p.data.impulse)).collect::<Vec<_>>());
             }
         }
         let rb = &scene.world.bodies[h];

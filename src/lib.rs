@@ -38,7 +38,7 @@ mod query;
 mod shapes;
 
 pub use curve::{ConvexCurve, CurvePoint, SupportJet};
-pub use dispatcher::{shape_time_of_impact, SmoothDispatcher, StartContactPolicy};
+pub use dispatcher::{shape_time_of_impact, CastPolicy, SmoothDispatcher};
 pub use error::{QueryError, ShapeError, MAX_LENGTH, MIN_LENGTH};
 pub use numerics::angle::wrap_phi;
 pub use numerics::jet::{Dual2, Jet2, JetVec};

@@ -1,21 +1,21 @@
 //! `SmoothDispatcher::cast_shapes_nonlinear`: every pair of convex shapes the dispatcher can
 //! convert gets the crate's exact time of impact ([`route_cast`]) — the φ–t tracker when one side
 //! is strictly convex, the gap tracker otherwise, the half-space cast — with the
-//! [`StartContactPolicy`] applied for `stop_at_penetration = false`; composites are decomposed
+//! [`CastPolicy`] applied (rapier's clamp path and start-contact rule); composites are decomposed
 //! with this dispatcher inside, and the shapes it cannot convert go to parry.
 
 use super::composite::composite_cast_nonlinear;
 use super::input_guard;
-use super::parry_fallback::{pair_size, parry_cast_nonlinear};
+use super::parry_fallback::parry_cast_nonlinear;
 use super::route::{curves_toi, pair_distance, route_cast, CurveOf, Route, RouteScratch};
-use super::start_contact::{parry_nonlinear_without_stop, pos12_at, rapier_rule, StartContact, StartContactPolicy};
-use super::support_shape::exact_contact;
+use super::rapier_rule::{in_contact, rapier_path, start_contact_answer, start_distance, CastPolicy};
+use super::parry_fallback::parry_nonlinear_without_stop;
 use super::SmoothDispatcher;
 use crate::error::QueryError;
-use crate::numerics::math::Real;
-use crate::query::gap::{gap_distance, gap_time_of_impact};
+use crate::numerics::math::{Pose, Real};
+use crate::query::gap::{gap_distance, gap_time_of_impact, gap_time_to_level};
 use crate::query::halfspace::{halfspace_distance, time_of_impact_halfspace};
-use crate::query::toi::{bounding_circles_part, TimeOfImpact, ToiOptions, ToiStatus};
+use crate::query::toi::{bounding_circles_part, TimeOfImpact, ToiOptions};
 use parry2d_f64::query::{NonlinearRigidMotion, ShapeCastHit, Unsupported};
 use parry2d_f64::shape::{HalfSpace, Shape};
 
@@ -123,14 +123,20 @@ pub fn shape_time_of_impact(
 impl SmoothDispatcher {
     /// The nonlinear cast (module docs).
     pub(crate) fn nonlinear_cast(&self, c: &NonlinearCast) -> Result<Option<ShapeCastHit>, Unsupported> {
-        let opts = ToiOptions {
+        let rapier = self.cast_policy == CastPolicy::Rapier;
+        let mut opts = ToiOptions {
             stop_at_penetration: c.stop,
             ..self.toi_options
         };
+        if rapier {
+            opts = rapier_path(c, &opts);
+        }
+        // The start-contact rule of rapier's CCD applies to solid bodies.
+        let rule = rapier && !c.stop && is_window(c.t0, c.t1);
         match route_cast(c.g1, c.g2, &mut RouteScratch::default()) {
-            Route::Curves { c1, c2, swapped } => self.cast_curves(c, &c1, &c2, swapped, &opts),
-            Route::Gap { c1, c2 } => self.cast_gap(c, &c1, &c2, &opts),
-            Route::HalfSpace { curve, hs, curve_first } => self.cast_halfspace(c, &curve, hs, curve_first, &opts),
+            Route::Curves { c1, c2, swapped } => self.cast_curves(c, &c1, &c2, swapped, &opts, rule),
+            Route::Gap { c1, c2 } => self.cast_gap(c, &c1, &c2, &opts, rule),
+            Route::HalfSpace { curve, hs, curve_first } => self.cast_halfspace(c, &curve, hs, curve_first, &opts, rule),
             // parry's composite helper casts bounding balls itself: the same guards as parry's casts.
             Route::Composite => match input_guard::cast_window_ok(c.m1, c.g1, c.m2, c.g2, c.t0, c.t1) {
                 Ok(true) => input_guard::finite(composite_cast_nonlinear(
@@ -139,20 +145,15 @@ impl SmoothDispatcher {
                 Ok(false) => Ok(None),
                 Err(e) => Err(e),
             },
-            Route::Parry { ours: true } if !c.stop && self.start_contact == StartContactPolicy::RapierAllowance => {
+            Route::Parry { ours: true } if rule => {
                 input_guard::finite(parry_nonlinear_without_stop(c.m1, c.g1, c.m2, c.g2, c.t0, c.t1))
             }
             Route::Parry { .. } => parry_cast_nonlinear(c.m1, c.g1, c.m2, c.g2, c.t0, c.t1, c.stop),
         }
     }
 
-    /// Whether the answer `r` goes out as it is (`stop_at_penetration`, or the plain policy)
-    /// rather than through the rapier rule.
-    fn plain(&self, c: &NonlinearCast) -> bool {
-        c.stop || self.start_contact == StartContactPolicy::Plain
-    }
-
-    /// A pair with a strictly convex side: the φ–t tracker.
+    /// A pair with a strictly convex side: the φ–t tracker, under rapier's rule when `rule`
+    /// (module docs of `rapier_rule`).
     fn cast_curves(
         &self,
         c: &NonlinearCast,
@@ -160,198 +161,59 @@ impl SmoothDispatcher {
         c2: &CurveOf,
         swapped: bool,
         opts: &ToiOptions,
+        rule: bool,
     ) -> Result<Option<ShapeCastHit>, Unsupported> {
         let (a, b) = if swapped { (c2, c1) } else { (c1, c2) };
-        if !self.plain(c) {
-            if let Some(r) = self.rapier_cast(c, a, b, opts, |o| curves_toi(a, c.m1, b, c.m2, c.t0, c.t1, o)) {
-                return r;
-            }
-        }
         // The specification's inexpensive test first: circles that never meet, no impact
-        // (and no contact at the start for the rapier rule below).
+        // (and no contact at the start either).
         if bounding_circles_part(a.get(), c.m1, b.get(), c.m2, c.t0, c.t1, opts.target_distance) {
             return Ok(None);
         }
-        let thickness = c.g1.ccd_thickness().min(c.g2.ccd_thickness());
-        let r = curves_toi(a, c.m1, b, c.m2, c.t0, c.t1, opts);
-        let dopts = &self.distance_options;
-        let at = |t: Real| pair_distance(c1, c2, swapped, &pos12_at(c.m1, c.m2, t), dopts).ok();
-        self.answer(
-            c,
-            r,
-            thickness,
-            |gap| {
-                let pos12 = pos12_at(c.m1, c.m2, c.t0);
-                if Self::far_apart(&pos12, c.g1, c.g2, gap) {
-                    return None;
-                }
-                pair_distance(c1, c2, swapped, &pos12, dopts)
+        if rule {
+            let d0 = start_distance(c).or_else(|| {
+                pair_distance(c1, c2, swapped, &pos12_at(c.m1, c.m2, c.t0), &self.distance_options)
                     .ok()
-                    .map(|d| StartContact::from_distance(&d))
-            },
-            |t| at(t).map(|d| d.distance),
-        )
+                    .map(|d| d.distance)
+            });
+            if let (Some(d0), Some(sa), Some(sb)) = (d0, a.any_side(), b.any_side()) {
+                if in_contact(c, d0) {
+                    return start_contact_answer(c, d0, opts, |m1, m2, level| {
+                        gap_time_to_level(sa, m1, sb, m2, c.t0, c.t1, level, &plain(opts))
+                    });
+                }
+            }
+        }
+        toi_to_parry(curves_toi(a, c.m1, b, c.m2, c.t0, c.t1, opts).map(Some))
     }
 
-    /// No strictly convex side: the gap tracker.
+    /// No strictly convex side: the gap tracker, under rapier's rule when `rule`.
     fn cast_gap(
         &self,
         c: &NonlinearCast,
         c1: &CurveOf,
         c2: &CurveOf,
         opts: &ToiOptions,
+        rule: bool,
     ) -> Result<Option<ShapeCastHit>, Unsupported> {
         let (Some(p1), Some(p2)) = (c1.gap_side(), c2.gap_side()) else {
             return Err(Unsupported);
         };
-        if !self.plain(c) {
-            if let Some(r) = self.rapier_cast(c, c1, c2, opts, |o| gap_time_of_impact(p1, c.m1, p2, c.m2, c.t0, c.t1, o)) {
-                return r;
-            }
-        }
         if bounding_circles_part(c1.get(), c.m1, c2.get(), c.m2, c.t0, c.t1, opts.target_distance) {
             return Ok(None);
         }
-        let r = gap_time_of_impact(p1, c.m1, p2, c.m2, c.t0, c.t1, opts);
-        let thickness = c.g1.ccd_thickness().min(c.g2.ccd_thickness());
-        let at = |t: Real| gap_distance(p1, p2, &pos12_at(c.m1, c.m2, t));
-        self.answer(
-            c,
-            r,
-            thickness,
-            |_| {
-                at(c.t0).map(|(distance, point1, point2, normal1)| StartContact {
-                    distance,
-                    point1,
-                    point2,
-                    normal1,
-                })
-            },
-            |t| at(t).map(|d| d.0),
-        )
+        if rule {
+            let d0 = start_distance(c).or_else(|| gap_distance(p1, p2, &pos12_at(c.m1, c.m2, c.t0)).map(|d| d.0));
+            if let Some(d0) = d0.filter(|d0| in_contact(c, *d0)) {
+                return start_contact_answer(c, d0, opts, |m1, m2, level| {
+                    gap_time_to_level(p1, m1, p2, m2, c.t0, c.t1, level, &plain(opts))
+                });
+            }
+        }
+        toi_to_parry(gap_time_of_impact(p1, c.m1, p2, c.m2, c.t0, c.t1, opts).map(Some))
     }
 
-    /// The rapier rule (experimental form): separated at the start, the exact time of impact
-    /// `full(opts)`; in contact, the first time the signed distance drops below
-    /// min(−A, d₀ − A/10), A a quarter of the thinner positive `ccd_thickness`, by the gap
-    /// tracker at that level. `None`: not answerable this way (the caller goes on).
-    fn rapier_cast(
-        &self,
-        c: &NonlinearCast,
-        c1: &CurveOf,
-        c2: &CurveOf,
-        opts: &ToiOptions,
-        full: impl Fn(&ToiOptions) -> Result<TimeOfImpact, QueryError>,
-    ) -> Option<Result<Option<ShapeCastHit>, Unsupported>> {
-        if std::env::var("NO_RULE").is_ok() {
-            return None;
-        }
-        if !crate::dispatcher::start_contact::is_window(c.t0, c.t1) {
-            return None;
-        }
-        if bounding_circles_part(c1.get(), c.m1, c2.get(), c.m2, c.t0, c.t1, opts.target_distance) {
-            return Some(Ok(None));
-        }
-        let pos12 = pos12_at(c.m1, c.m2, c.t0);
-        let gap = StartContactPolicy::START_CONTACT_GAP * pair_size(c.g1, c.g2);
-        let d0 = exact_contact(&pos12, c.g1, c.g2, None).map(|k| k.dist)?;
-        let nlerp = ToiOptions {
-            path: if c.m2.angvel == 0.0 || c.m1.angvel == 0.0 {
-                crate::MotionPath::Nlerp
-            } else {
-                crate::MotionPath::ConstantSpin
-            },
-            ..*opts
-        };
-        if d0 > gap {
-            return Some(toi_to_parry(full(&nlerp).map(Some)));
-        }
-        // The fast body: the one that moves (rapier's is shape 1, but parry's composite helpers
-        // hand a composite target's parts over as shape 1).
-        let still = |m: &NonlinearRigidMotion| m.linvel == parry2d_f64::math::Vector::ZERO && m.angvel == 0.0;
-        let (fast_g, fast_m, other_g, other_m) = if still(c.m1) && !still(c.m2) {
-            (c.g2, c.m2, c.g1, c.m1)
-        } else {
-            (c.g1, c.m1, c.g2, c.m2)
-        };
-        // The inradius of the fast body about its rotation centre.
-        let centre = fast_m.local_center;
-        let proj = fast_g.project_local_point(centre, false);
-        let r_in = if proj.is_inside { (proj.point - centre).length() } else { 0.0 };
-        let r_in = if r_in > 0.0 { r_in } else { fast_g.ccd_thickness().max(gap) };
-        let approaching = || {
-            let Some(k) = exact_contact(&pos12, c.g1, c.g2, None) else {
-                return false;
-            };
-            let span = c.t1 - c.t0;
-            let eff = |m: &NonlinearRigidMotion| {
-                let d = crate::wrap_phi(m.angvel * span);
-                NonlinearRigidMotion { angvel: d.sin() / span, ..*m }
-            };
-            let sc = StartContact {
-                distance: k.dist,
-                point1: k.points[0].point1,
-                point2: pos12.inverse_transform_point(k.points[0].point2),
-                normal1: k.normal,
-            };
-            sc.rate(&eff(c.m1), &eff(c.m2), c.t0) < 0.0
-        };
-        let rule = std::env::var("RULE").unwrap_or_default();
-        let nudge = c.t0 + StartContactPolicy::START_NUDGE * (c.t1 - c.t0);
-        // The core: a disc about the fast body's rotation centre, moving with it.
-        let core_frac: f64 = std::env::var("CORE_FRAC").ok().and_then(|s| s.parse().ok()).unwrap_or(0.5);
-        let core = parry2d_f64::shape::Ball::new(core_frac * r_in);
-        let com0 = fast_m.start * fast_m.local_center;
-        let mc = NonlinearRigidMotion::new(
-            parry2d_f64::math::Pose::from_translation(com0),
-            parry2d_f64::math::Vector::ZERO,
-            fast_m.linvel,
-            0.0,
-        );
-        let core_r = match shape_time_of_impact(&core, &mc, other_g, other_m, c.t0, c.t1, &ToiOptions { stop_at_penetration: true, ..*opts }) {
-            Ok(r) => r,
-            Err(e) => return Some(toi_to_parry(Err(e))),
-        };
-        let t_core = (core_r.status != ToiStatus::NoHit).then_some(core_r.time);
-        let use_pen = !(rule == "core" || (rule == "mixed" && approaching()));
-        let t_pen = if use_pen {
-            let allowance = StartContactPolicy::ALLOWANCE * r_in;
-            let floor = -0.9 * r_in;
-            let mut level = (-allowance).min(d0 - StartContactPolicy::DEEPER_FRACTION * allowance);
-            if level < floor {
-                level = floor.min(d0 - 1e-3 * allowance);
-            }
-            if rule == "trans" {
-                level = (-allowance).min(d0 - allowance);
-            }
-            let (s1, s2) = (c1.any_side()?, c2.any_side()?);
-            let (mut m1, mut m2) = (*c.m1, *c.m2);
-            if rule == "trans" {
-                m1.angvel = 0.0;
-                m2.angvel = 0.0;
-            }
-            match crate::query::gap::gap_time_to_level(s1, &m1, s2, &m2, c.t0, c.t1, level, &nlerp) {
-                Ok(r) if r.status == ToiStatus::NoHit => None,
-                Ok(r) => Some(r),
-                Err(e) => return Some(toi_to_parry(Err(e))),
-            }
-        } else {
-            None
-        };
-        let pick = match (t_pen, t_core) {
-            (Some(p), Some(tc)) if tc < p.time => Some(TimeOfImpact { time: tc, ..p }),
-            (Some(p), _) => Some(p),
-            (None, Some(tc)) => Some(TimeOfImpact { time: tc, status: ToiStatus::PenetratingAtStart, ..core_r }),
-            (None, None) => None,
-        };
-        Some(toi_to_parry(Ok(pick.map(|r| TimeOfImpact {
-            time: r.time.max(nudge),
-            status: ToiStatus::PenetratingAtStart,
-            ..r
-        }))))
-    }
-
-    /// A curve against a half-space: the half-space cast.
+    /// A curve against a half-space: the half-space cast, under rapier's rule when `rule` (the
+    /// translation's deepening below a level is the cast against the plane moved by the level).
     fn cast_halfspace(
         &self,
         c: &NonlinearCast,
@@ -359,54 +221,51 @@ impl SmoothDispatcher {
         hs: &HalfSpace,
         curve_first: bool,
         opts: &ToiOptions,
+        rule: bool,
     ) -> Result<Option<ShapeCastHit>, Unsupported> {
-        let r = if curve_first {
-            time_of_impact_halfspace(curve.get(), c.m1, hs, c.m2, c.t0, c.t1, opts)
-        } else {
-            time_of_impact_halfspace(curve.get(), c.m2, hs, c.m1, c.t0, c.t1, opts).map(TimeOfImpact::swapped)
+        // The half-space cast in the caller's order, the plane moved by `shift` along its normal.
+        let cast = |m1: &NonlinearRigidMotion, m2: &NonlinearRigidMotion, shift: Real, o: &ToiOptions| {
+            let (mc, mh) = if curve_first { (m1, m2) } else { (m2, m1) };
+            let moved = NonlinearRigidMotion {
+                start: mh.start * Pose::from_translation(hs.normal * shift),
+                ..*mh
+            };
+            let r = time_of_impact_halfspace(curve.get(), mc, hs, &moved, c.t0, c.t1, o);
+            if curve_first {
+                r
+            } else {
+                r.map(TimeOfImpact::swapped)
+            }
         };
-        let thickness = if curve_first {
-            c.g1.ccd_thickness()
-        } else {
-            c.g2.ccd_thickness()
-        };
-        let at = |t: Real| halfspace_distance(curve.get(), hs, &pos12_at(c.m1, c.m2, t), curve_first).ok();
-        self.answer(
-            c,
-            r,
-            thickness,
-            |_| at(c.t0).map(|d| StartContact::from_distance(&d)),
-            |t| at(t).map(|d| d.distance),
-        )
-    }
-
-    /// The answer `r` of a cast, out to parry: as it is under `stop_at_penetration` or the plain
-    /// policy, otherwise through the rapier rule (`start_contact`) with the pair's CCD
-    /// `thickness`, its contact at the window start `start(gap)` (`gap` the policy's start-contact
-    /// gap for the pair's size) and its signed distance `at(t)`.
-    fn answer(
-        &self,
-        c: &NonlinearCast,
-        r: Result<TimeOfImpact, QueryError>,
-        thickness: Real,
-        start: impl Fn(Real) -> Option<StartContact>,
-        at: impl Fn(Real) -> Option<Real>,
-    ) -> Result<Option<ShapeCastHit>, Unsupported> {
-        if self.plain(c) {
-            return toi_to_parry(r.map(Some));
+        if rule {
+            let d0 = halfspace_distance(curve.get(), hs, &pos12_at(c.m1, c.m2, c.t0), curve_first)
+                .ok()
+                .map(|d| d.distance);
+            if let Some(d0) = d0.filter(|d0| in_contact(c, *d0)) {
+                return start_contact_answer(c, d0, opts, |m1, m2, level| cast(m1, m2, level, &plain(opts)));
+            }
         }
-        let gap = StartContactPolicy::START_CONTACT_GAP * pair_size(c.g1, c.g2);
-        // The rule's search for a deepening contact evaluates the signed distance up to about 42
-        // times (16 samples, then bisection of one sample interval to 1e-9 of the window): the
-        // exact contact query gives the same quantity (the largest separation over all
-        // directions, exact to rounding; `tests::exact_contact_is_each_routes_signed_distance`)
-        // at a fraction of the route's own distance, for every pair it reads.
-        let signed = |t: Real| match exact_contact(&pos12_at(c.m1, c.m2, t), c.g1, c.g2, None) {
-            Some(k) => Some(k.dist),
-            None => at(t),
-        };
-        toi_to_parry(r.map(|r| rapier_rule(r, c.m1, c.m2, c.t0, c.t1, thickness, gap, || start(gap), signed)))
+        toi_to_parry(cast(c.m1, c.m2, 0.0, opts).map(Some))
     }
+}
+
+/// `opts` on parry's own motions (the level searches of the start-contact rule run on motions
+/// without spin, which the nlerp path would leave unchanged), reporting from the start.
+fn plain(opts: &ToiOptions) -> ToiOptions {
+    ToiOptions {
+        path: crate::MotionPath::ConstantSpin,
+        ..*opts
+    }
+}
+
+/// Shape 2's pose in shape 1's frame at time `t`.
+pub(crate) fn pos12_at(m1: &NonlinearRigidMotion, m2: &NonlinearRigidMotion, t: Real) -> Pose {
+    m1.position_at_time(t).inv_mul(&m2.position_at_time(t))
+}
+
+/// Whether `[t0, t1]` is a non-empty finite window (false for NaN).
+pub(crate) fn is_window(t0: Real, t1: Real) -> bool {
+    t1 > t0 && (t1 - t0).is_finite()
 }
 
 #[cfg(test)]

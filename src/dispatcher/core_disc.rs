@@ -15,6 +15,7 @@
 //! Each radius is exact for the shapes the contact query reads (polygons, discs, ellipses and
 //! `CapsuleEllipse`s): the inradius about the centroid in closed form.
 
+use crate::parry_shape::{capsule_ellipse_core, polygon_core, Core};
 use crate::query::contact::{Contact, SupportShape};
 use parry2d_f64::math::{Pose, Vector};
 
@@ -24,84 +25,69 @@ use parry2d_f64::math::{Pose, Vector};
 pub(crate) const CORE_CONTACT_FRACTION: f64 = 0.5;
 
 /// The core contact of a pair whose exact contact is `c` (body 1 at the origin, body 2 at
-/// `pos12`): the point of the incident body's core disc ([`CORE_CONTACT_FRACTION`] of its core)
-/// facing the reference face along the contact normal, and the point of the face's line under
-/// it, with the gap between them, in body 1's frame. Only for a contact at a face (the face's
-/// body is the wall the core must not cross; a corner or a curve on both sides has no such
-/// line), and only when the core's point lies over the face (its tangential position within
-/// the face's extent, a segment or an edge), where the face's line is the face; `None`
-/// otherwise.
+/// `pos12`), in body 1's frame: the point of a body's core disc ([`CORE_CONTACT_FRACTION`] of its
+/// core) facing the other body along the contact normal n, and the point of the other body's
+/// supporting line (the line through its witness, normal to n) opposite it, with the gap
+/// between them along n. Of the two bodies the one whose centre is nearer the other's
+/// supporting line is taken: the body at risk of passing the other (a wall's or a segment's
+/// centre lies far behind or on its own face, or it has no core at all). `None` when neither
+/// body has a core.
+///
+/// The gap along n is a lower bound on the core's distance to the other body (the other body
+/// lies beyond its supporting line), so the constraint it makes — the core may not close the
+/// gap along n faster than the step allows — never holds back a motion that keeps the core off
+/// the other body along n.
 pub(crate) fn core_contact(s1: SupportShape, s2: SupportShape, pos12: &Pose, c: &Contact) -> Option<CoreContact> {
-    let reference = c.reference?;
     let n = c.normal;
     let w = &c.points[0];
-    let (core, centre) = if reference == 0 {
-        let k = core_of(s2)?;
-        (k, pos12 * k.centre)
-    } else {
-        let k = core_of(s1)?;
-        (k, k.centre)
-    };
-    if !(core.radius > 0.0) {
-        return None;
-    }
-    let r = CORE_CONTACT_FRACTION * core.radius;
-    let (point1, point2, gap) = if reference == 0 {
-        // Body 2's core towards body 1's face (n points from body 1 to body 2).
-        let q = centre - n * r;
-        let gap = (q - w.point1).dot(n);
-        (q - n * gap, q, gap)
-    } else {
-        let q = centre + n * r;
+    let mut best: Option<(f64, CoreContact)> = None;
+    if let Some(k) = core_of(s1).filter(|k| k.radius > 0.0) {
+        // Body 1's core towards body 2: its line through body 2's witness, across n.
+        let height = (w.point2 - k.centre).dot(n);
+        let q = k.centre + n * (CORE_CONTACT_FRACTION * k.radius);
         let gap = (w.point2 - q).dot(n);
-        (q, q + n * gap, gap)
-    };
-    let on_face = if reference == 0 { point1 } else { point2 };
-    let ok = over_face(if reference == 0 { s1 } else { s2 }, reference, pos12, c, on_face);
-    (ok && point1.is_finite() && point2.is_finite() && gap.is_finite()).then_some(CoreContact {
-        point1,
-        point2,
-        dist: gap,
-        centre,
-    })
-}
-
-/// Whether `p` (body 1's frame), on the line of the reference face of `c`, lies within that
-/// face: between the ends of the face's edge of the polygon `s` (body `body`, at the origin or
-/// at `pos12`), dilated by its radius along the normal. The face is the edge whose outward
-/// normal is the contact normal (n for body 1, −n for body 2).
-fn over_face(s: SupportShape, body: usize, pos12: &Pose, c: &Contact, p: Vector) -> bool {
-    let SupportShape::Polygon { vertices, normals, .. } = s else {
-        // A CapsuleEllipse's segment is its one face: x = r1, |y| ≤ r2.
-        if let SupportShape::CapsuleEllipse(_, r2, _) = s {
-            let local = if body == 0 { p } else { pos12.inverse_transform_point(p) };
-            return local.y.abs() <= r2;
+        best = Some((
+            height.abs(),
+            CoreContact {
+                point1: q,
+                point2: q + n * gap,
+                dist: gap,
+                centre: k.centre,
+                body: 0,
+            },
+        ));
+    }
+    if let Some(k) = core_of(s2).filter(|k| k.radius > 0.0) {
+        let centre = pos12 * k.centre;
+        let height = (centre - w.point1).dot(n);
+        let q = centre - n * (CORE_CONTACT_FRACTION * k.radius);
+        let gap = (q - w.point1).dot(n);
+        if best.is_none_or(|b| height.abs() < b.0) {
+            best = Some((
+                height.abs(),
+                CoreContact {
+                    point1: q - n * gap,
+                    point2: q,
+                    dist: gap,
+                    centre,
+                    body: 1,
+                },
+            ));
         }
-        return false;
-    };
-    let n_out = if body == 0 {
-        c.normal
-    } else {
-        pos12.inverse_transform_vector(-c.normal)
-    };
-    let local = if body == 0 { p } else { pos12.inverse_transform_point(p) };
-    let k = (0..normals.len())
-        .max_by(|&i, &j| normals[i].dot(n_out).total_cmp(&normals[j].dot(n_out)))
-        .unwrap_or(0);
-    let (a, b) = (vertices[k], vertices[(k + 1) % vertices.len()]);
-    let t = b - a;
-    let u = (local - a).dot(t) / t.length_squared();
-    (0.0..=1.0).contains(&u)
+    }
+    best.map(|b| b.1)
+        .filter(|b| b.point1.is_finite() && b.point2.is_finite() && b.dist.is_finite())
 }
 
 /// A core contact ([`core_contact`]): its points on bodies 1 and 2 in body 1's frame, its gap
-/// along the contact normal and the core's centre (body 1's frame).
+/// along the contact normal, the core's centre (body 1's frame) and its body (0 or 1).
 #[derive(Copy, Clone, Debug, PartialEq)]
 pub(crate) struct CoreContact {
     pub point1: Vector,
     pub point2: Vector,
     pub dist: f64,
     pub centre: Vector,
+    pub body: usize,
 }
 
 impl CoreContact {
@@ -111,22 +97,6 @@ impl CoreContact {
     pub(crate) fn straddled_by(&self, n: Vector, p: [Vector; 2]) -> bool {
         let t = Vector::new(-n.y, n.x);
         (p[0] - self.centre).dot(t) * (p[1] - self.centre).dot(t) <= 0.0
-    }
-}
-
-/// A disc inside a shape: its centre (the shape's centroid) and radius (the distance from the
-/// centroid to the boundary).
-#[derive(Copy, Clone, Debug, PartialEq)]
-pub(crate) struct Core {
-    pub centre: Vector,
-    pub radius: f64,
-}
-
-impl Core {
-    /// The radius of a disc about `c` that lies inside the shape: the core's radius less the
-    /// distance from its centre (0 when `c` is not inside the core).
-    pub(crate) fn radius_about(&self, c: Vector) -> f64 {
-        (self.radius - (c - self.centre).length()).max(0.0)
     }
 }
 
@@ -149,89 +119,6 @@ pub(crate) fn core_of(s: SupportShape) -> Option<Core> {
         SupportShape::CapsuleEllipse(r1, r2, r3) => capsule_ellipse_core(r1, r2, r3),
     };
     (core.centre.is_finite() && core.radius.is_finite() && core.radius >= 0.0).then_some(core)
-}
-
-/// The core of a convex polygon (counter-clockwise, its edge normals) dilated by `r`: the
-/// centroid of the dilated region — the core polygon, a rectangle r wide on each edge, a
-/// circular sector at each corner — and its distance to the nearest edge line plus r. A segment
-/// (two vertices) has no area of its own: its core is its midpoint with radius r.
-fn polygon_core(v: &[Vector], normals: &[Vector], r: f64) -> Option<Core> {
-    let n = v.len();
-    if n < 2 || normals.len() != n {
-        return None;
-    }
-    // Moments about the vertex mean (less cancellation), without allocating.
-    let c0 = v.iter().copied().sum::<Vector>() / n as f64;
-    let (mut area, mut m) = (0.0, Vector::ZERO);
-    // The signed area and first moment of the triangle (c0, p, q), c0 at the origin.
-    let fan = |p: Vector, q: Vector| {
-        let c = p.perp_dot(q);
-        (0.5 * c, (p + q) * (c / 6.0))
-    };
-    for i in 0..n {
-        let (a, mm) = fan(v[i] - c0, v[(i + 1) % n] - c0);
-        area += a;
-        m += mm;
-    }
-    if r > 0.0 {
-        for i in 0..n {
-            let (p, q, e) = (v[i] - c0, v[(i + 1) % n] - c0, normals[i]);
-            // The rectangle on edge i (as a fan about c0: its signed pieces sum to it).
-            let (pe, qe) = (p + e * r, q + e * r);
-            for (a, b) in [(p, pe), (pe, qe), (qe, q), (q, p)] {
-                let (da, dm) = fan(a, b);
-                area += da;
-                m += dm;
-            }
-            // The sector at vertex i, from the previous edge's normal to this one's.
-            let u0 = normals[(i + n - 1) % n];
-            let alpha = u0.perp_dot(e).atan2(u0.dot(e)).rem_euclid(core::f64::consts::TAU);
-            let sector = 0.5 * alpha * r * r;
-            area += sector;
-            m += Vector::new(e.y - u0.y, u0.x - e.x) * (r * r * r / 3.0) + p * sector;
-        }
-    }
-    let centre = if area > 0.0 {
-        c0 + m / area
-    } else if n == 2 || r > 0.0 {
-        c0
-    } else {
-        return None;
-    };
-    let radius = (0..n)
-        .map(|i| normals[i].dot(v[i] - centre))
-        .fold(f64::INFINITY, f64::min)
-        + r;
-    Some(Core {
-        centre,
-        radius: radius.max(0.0),
-    })
-}
-
-/// The core of the `CapsuleEllipse` (r1, r2, r3): its centroid (cx, 0) on the axis of symmetry,
-/// from its closed-form moments, and the distance from there to each piece of the boundary —
-/// the segment x = r1 (r1 − cx); the two arcs, whose nearest points are their ends (the squared
-/// distance to a point of an arc, as a function of the arc's angle, is a cosine with its maximum
-/// inside the arc); the half ellipse x ≤ 0, semi-axes r3 and B = r1 + r2, where the squared
-/// distance is the quadratic (r3² − B²)c² − 2r3·cx·c + cx² + B² of c = cos φ ∈ [−1, 0].
-fn capsule_ellipse_core(r1: f64, r2: f64, r3: f64) -> Core {
-    let m = crate::parry_shape::capsule_ellipse_moments(r1, r2, r3);
-    let cx = m[1] / m[0];
-    let b = r1 + r2;
-    let segment = r1 - cx;
-    let arcs = ((r1 - cx).powi(2) + r2 * r2).sqrt().min((cx * cx + b * b).sqrt());
-    let quad = |c: f64| (r3 * r3 - b * b) * c * c - 2.0 * r3 * cx * c + cx * cx + b * b;
-    let mut best = quad(-1.0).min(quad(0.0));
-    let k = r3 * r3 - b * b;
-    if k > 0.0 {
-        let c = (r3 * cx / k).clamp(-1.0, 0.0);
-        best = best.min(quad(c));
-    }
-    let ellipse = best.max(0.0).sqrt();
-    Core {
-        centre: Vector::new(cx, 0.0),
-        radius: segment.min(arcs).min(ellipse).max(0.0),
-    }
 }
 
 #[cfg(test)]

@@ -273,9 +273,9 @@ fn manifold_from_contact<M, C: Default + Copy>(
         match manifold.points.len() {
             1 => manifold.points.push(core_point),
             _ => {
-                // The points on the core's body (the incident one).
+                // The points on the core's body.
                 let on_body = |p: &TrackedContact<C>| {
-                    if c.reference == Some(1) {
+                    if k.body == 0 {
                         p.local_p1
                     } else {
                         pos12 * p.local_p2

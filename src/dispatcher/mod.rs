@@ -65,11 +65,11 @@ pub(crate) mod parry_fallback;
 mod parry_pairs;
 mod queries;
 pub(crate) mod route;
-pub(crate) mod start_contact;
+pub(crate) mod rapier_rule;
 pub(crate) mod support_shape;
 
 pub use cast::shape_time_of_impact;
-pub use start_contact::StartContactPolicy;
+pub use rapier_rule::CastPolicy;
 
 use crate::error::QueryError;
 use crate::numerics::math::{Pose, Real};
@@ -100,9 +100,9 @@ pub struct SmoothDispatcher {
     pub distance_options: DistanceOptions,
     /// Options of the casts (the target distance and `stop_at_penetration` come from the caller).
     pub toi_options: ToiOptions,
-    /// What `cast_shapes_nonlinear` answers with `stop_at_penetration = false` for shapes in
-    /// contact at the start (default: rapier's allowance rule).
-    pub start_contact: StartContactPolicy,
+    /// What `cast_shapes_nonlinear` answers: rapier's CCD rules (the default) or the crate's
+    /// time of impact as it is ([`CastPolicy`]).
+    pub cast_policy: CastPolicy,
     /// Whether a contact manifold's computation starts from the normal of the manifold rapier
     /// hands back (default true). The answer is the same either way (the same certificate of
     /// global optimality; `tests/warm_start.rs`); only pairs with two curved sides go faster.
@@ -114,7 +114,7 @@ impl Default for SmoothDispatcher {
         Self {
             distance_options: DistanceOptions::default(),
             toi_options: ToiOptions::default(),
-            start_contact: StartContactPolicy::default(),
+            cast_policy: CastPolicy::default(),
             warm_start: true,
         }
     }
@@ -151,9 +151,9 @@ impl SmoothDispatcher {
         self
     }
 
-    /// The same dispatcher with this start-contact policy.
-    pub fn with_start_contact(mut self, policy: StartContactPolicy) -> Self {
-        self.start_contact = policy;
+    /// The same dispatcher with this cast policy.
+    pub fn with_cast_policy(mut self, policy: CastPolicy) -> Self {
+        self.cast_policy = policy;
         self
     }
 

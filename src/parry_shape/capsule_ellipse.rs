@@ -1,7 +1,7 @@
 //! parry's traits for [`CapsuleEllipse`]: generic ray cast and projection, its segment as a
 //! flat feature, exact mass.
 
-use super::aabb_ccd_thickness;
+use super::core::capsule_ellipse_core;
 use super::features::curve_feature;
 use super::mass::{capsule_ellipse_moments, mass_from_moments};
 use super::projection::{project_on_curve, project_on_curve_with_feature};
@@ -83,7 +83,9 @@ impl Shape for CapsuleEllipse {
     }
 
     fn ccd_thickness(&self) -> Real {
-        aabb_ccd_thickness(&self.compute_local_aabb())
+        // The inradius about the centroid (module docs of `core`).
+        let (r1, r2, r3) = self.params();
+        capsule_ellipse_core(r1, r2, r3).radius
     }
 
     fn ccd_angular_thickness(&self) -> Real {

@@ -63,6 +63,7 @@ mod capsule_ellipse;
 mod custom_curve;
 mod ellipse;
 mod features;
+mod core;
 mod mass;
 mod projection;
 mod ray;
@@ -70,7 +71,7 @@ mod rounded_polygon;
 
 pub use features::FLAT_FEATURE_MAX_ANGLE;
 pub(crate) use features::{face_id, vertex_id};
-pub(crate) use mass::capsule_ellipse_moments;
+pub(crate) use core::{capsule_ellipse_core, polygon_core, Core};
 
 use crate::curve::ConvexCurve;
 use crate::numerics::math::{Real, Vector};

@@ -1,7 +1,7 @@
 //! parry's traits for [`RoundedPolygon`]: exact projection (the core polygon's signed distance
 //! minus the radius), parry's `RoundConvexPolygon` features, exact mass.
 
-use super::aabb_ccd_thickness;
+use super::core::polygon_core;
 use super::mass::{mass_from_moments, rounded_polygon_moments};
 use super::ray::curve_ray;
 use super::{face_id, vertex_id};
@@ -216,14 +216,9 @@ impl Shape for RoundedPolygon {
     }
 
     fn ccd_thickness(&self) -> Real {
-        // parry's RoundConvexPolygon: the core polygon's smallest AABB half-extent + radius.
-        let v = self.vertices();
-        let (mut lo, mut hi) = (v[0], v[0]);
-        for p in v {
-            lo = lo.min(*p);
-            hi = hi.max(*p);
-        }
-        aabb_ccd_thickness(&Aabb::new(lo, hi)) + self.corner_radius()
+        // The inradius about the centroid (module docs of `core`): a thin polygon turned off its
+        // axes is thinner than its box says.
+        polygon_core(self.vertices(), self.edge_normals(), self.corner_radius()).map_or(0.0, |c| c.radius)
     }
 
     fn ccd_angular_thickness(&self) -> Real {

@@ -140,9 +140,12 @@ fn run_inner(case: &Case, method: Method) -> Outcome {
         for (i, h) in scene.dynamic.iter().enumerate() {
             let rb = &scene.world.bodies[*h];
             let r = radii[i];
-            let speed = rb.linvel().length() + rb.angvel().abs() * r;
-            let turn = (*rb.rotation() * before[i].rot.inverse()).angle().abs();
-            let moved = (rb.center_of_mass() - before[i].com).length() + turn * r;
+            let (speed, moved) = if std::env::var("STRICT").is_ok() {
+                let turn = (*rb.rotation() * before[i].rot.inverse()).angle().abs();
+                (rb.linvel().length() + rb.angvel().abs() * r, (rb.center_of_mass() - before[i].com).length() + turn * r)
+            } else {
+                (rb.linvel().length(), (rb.center_of_mass() - before[i].com).length())
+            };
             if speed >= FROZEN_SPEED && moved < FROZEN_FRACTION * speed * DT {
                 still[i] += 1;
                 if still[i] >= FROZEN_STEPS && out.frozen.is_none() {

@@ -1,0 +1,267 @@
+//! [`CastPolicy`]: what `SmoothDispatcher::cast_shapes_nonlinear` answers, and the rules it
+//! follows for rapier's CCD ([`CastPolicy::Rapier`], the default).
+//!
+//! # What rapier does with a cast (rapier2d 0.36, `dynamics/ccd`)
+//!
+//! rapier asks the dispatcher to cast a *fast* body (shape 1, its motion built from the solved
+//! velocities of the step) against a target held at its end-of-step pose (shape 2, a constant
+//! motion), over one step, with `stop_at_penetration = false` for solid bodies. It discards a
+//! hit at exactly the start of the step, takes the earliest hit over all targets, and puts the
+//! body at `Sweep::from_poses(start, end).transform_at(fraction)`: the rotation centre at that
+//! fraction of its straight path, the rotation *nlerped* between the step's end rotations (the
+//! short way round) — not the constant spin it asked about. Velocities are kept; the next step's
+//! solver resolves the contact.
+//!
+//! # The rules of [`CastPolicy::Rapier`]
+//!
+//! 1. **The path rapier applies.** Every cast follows [`crate::MotionPath::Nlerp`], the path the
+//!    clamp puts the body on, so a reported contact is a contact on the pose rapier will apply,
+//!    and the body got there without meeting anything before: its rotation may differ from
+//!    the constant spin by up to 0.008 rad at a quarter turn of π/4 per step, by any amount
+//!    beyond π/2, and the whole way round once a step's rotation exceeds half a turn.
+//! 2. **Apart at the start**: the exact time of impact along that path (the shapes touching).
+//! 3. **In contact at the start** (penetrating, or within [`CastPolicy::START_CONTACT_GAP`] of
+//!    the pair's size): rapier's solver has just seen this contact, and the cast answers for
+//!    what the step's *translation* does to it. The fast body's *core* — the disc of
+//!    [`CastPolicy::CORE`] of its inradius r about its rotation centre, which its rotation does
+//!    not move — must not reach the target: the centre of a body never passes a wall of any
+//!    thickness, a segment included. And the translation alone (the motion without its spin)
+//!    may deepen the contact by at most the *allowance* [`CastPolicy::ALLOWANCE`]·r a step,
+//!    below the start's depth, so a body driven into a wall is stopped and one sliding or
+//!    resting on it moves freely. The answer is the earlier of the two, at least
+//!    [`CastPolicy::START_NUDGE`] of the window after the start (rapier would discard the start
+//!    itself), or no hit.
+//!
+//! What rule 3 leaves to the solver — the overlap a spin brings in at a start contact — the
+//! solver sees at the next step: the contact manifold's two points where faces face each other,
+//! and its *core contact* (`core_disc`), a speculative point of the body's core that stops a
+//! centre heading for a wall whatever the spin does to the contact point. Why the rotation is
+//! left out of rule 3: where a step's rotation exceeds half a turn, rapier's clamp path turns
+//! the other way from the solver's spin, and a rule on the rotated path clamps a body again and
+//! again at a contact the solver sees leaving: the body freezes.
+//!
+//! r is the fast body's distance from its rotation centre to its boundary (its *inradius*
+//! about that centre, the `ccd_thickness` of this crate's shapes). Which body is the fast one:
+//! the one that moves (rapier's shape 1; parry's composite helpers hand a composite target's
+//! parts over as shape 1, still).
+
+use super::cast::{toi_to_parry, NonlinearCast};
+use super::parry_fallback::pair_size;
+use super::support_shape::{exact_contact, support_shape, SupportScratch};
+use super::core_disc::core_of;
+use crate::error::QueryError;
+use crate::numerics::math::{Pose, Real, Vector};
+use crate::query::path::MotionPath;
+use crate::query::toi::{TimeOfImpact, ToiOptions, ToiStatus};
+use parry2d_f64::query::{NonlinearRigidMotion, ShapeCastHit, Unsupported};
+use parry2d_f64::shape::{Ball, Shape};
+
+/// What `SmoothDispatcher::cast_shapes_nonlinear` answers (module docs).
+///
+/// ```
+/// use smooth_ccd2d::{CastPolicy, SmoothDispatcher};
+/// let for_rapier = SmoothDispatcher::default();
+/// assert_eq!(for_rapier.cast_policy, CastPolicy::Rapier);
+/// let plain = SmoothDispatcher::default().with_cast_policy(CastPolicy::Plain);
+/// assert_eq!(plain.cast_policy, CastPolicy::Plain);
+/// ```
+#[derive(Copy, Clone, Debug, Default, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum CastPolicy {
+    /// rapier's CCD (the default, for `NarrowPhase::with_query_dispatcher`): every cast on the
+    /// path rapier's clamp applies ([`MotionPath::Nlerp`]), and with
+    /// `stop_at_penetration = false` a contact at the start answered by the core and the
+    /// allowance (module docs). Pairs of two moving, turning bodies (never rapier's) are cast on
+    /// their constant spins.
+    #[default]
+    Rapier,
+    /// The crate's time of impact as it is ([`crate::time_of_impact`], [`crate::shape_time_of_impact`]):
+    /// parry's constant-spin motions, and with `stop_at_penetration = false` a separating
+    /// contact at the start looked past and an approaching one reported at the start time.
+    Plain,
+}
+
+impl CastPolicy {
+    /// Shapes closer than this fraction of the pair's size (the sum of the bounding radii) at
+    /// the start of a cast are in contact there: rapier's CCD leaves a body it clamped at an
+    /// impact about 10⁻¹⁰ from the other shape.
+    pub const START_CONTACT_GAP: Real = 1e-6;
+
+    /// The earliest a contact at the start is reported to rapier, as a fraction of the window:
+    /// far below any motion rapier resolves, yet after the start time, which rapier discards.
+    pub const START_NUDGE: f64 = 1e-9;
+
+    /// How much deeper the translation of a step may take a contact at the start, as a
+    /// fraction of the fast body's inradius about its rotation centre.
+    pub const ALLOWANCE: Real = 0.25;
+
+    /// The radius of the core the CCD keeps off every target, as a fraction of the fast body's
+    /// inradius about its rotation centre (smaller than the manifold's core contact, half, so
+    /// that the solver stops a centre before the CCD has to).
+    pub const CORE: Real = 0.25;
+}
+
+/// The fast body of a cast: shape, motion, and the other shape and motion.
+struct Fast<'a> {
+    g: &'a dyn Shape,
+    m: &'a NonlinearRigidMotion,
+    other_g: &'a dyn Shape,
+    other_m: &'a NonlinearRigidMotion,
+}
+
+/// Whether a motion stays put.
+fn still(m: &NonlinearRigidMotion) -> bool {
+    m.linvel == Vector::ZERO && m.angvel == 0.0
+}
+
+/// The fast body of `c` (module docs).
+fn fast<'a>(c: &NonlinearCast<'a>) -> Fast<'a> {
+    if still(c.m1) && !still(c.m2) {
+        Fast {
+            g: c.g2,
+            m: c.m2,
+            other_g: c.g1,
+            other_m: c.m1,
+        }
+    } else {
+        Fast {
+            g: c.g1,
+            m: c.m1,
+            other_g: c.g2,
+            other_m: c.m2,
+        }
+    }
+}
+
+/// The distance from `centre` to the boundary of `g` (0 when `centre` is not inside): exact from
+/// the shape's core for the shapes the contact query reads, else by point projection.
+pub(crate) fn inradius_about(g: &dyn Shape, centre: Vector) -> Real {
+    let mut scratch = SupportScratch::default();
+    if let Some(k) = support_shape(g, &mut scratch).and_then(core_of) {
+        // The polygon's own edge distances are exact about any point; other cores are discs.
+        if let Some(s) = support_shape(g, &mut SupportScratch::default()) {
+            if let crate::query::contact::SupportShape::Polygon { vertices, normals, radius } = s {
+                let d = (0..vertices.len())
+                    .map(|i| normals[i].dot(vertices[i] - centre))
+                    .fold(Real::INFINITY, Real::min);
+                return (d + radius).max(0.0);
+            }
+        }
+        return k.radius_about(centre);
+    }
+    let p = g.project_local_point(centre, false);
+    if p.is_inside {
+        (p.point - centre).length()
+    } else {
+        0.0
+    }
+}
+
+/// The options of a cast on rapier's clamp path: nlerp, unless both bodies turn (a pair rapier
+/// never casts; the constant spins then).
+pub(crate) fn rapier_path(c: &NonlinearCast, opts: &ToiOptions) -> ToiOptions {
+    let path = if c.m1.angvel == 0.0 || c.m2.angvel == 0.0 {
+        MotionPath::Nlerp
+    } else {
+        MotionPath::ConstantSpin
+    };
+    ToiOptions { path, ..*opts }
+}
+
+/// The signed distance of the cast's shapes at its start (the exact contact query's), or `None`
+/// when that query does not read the pair.
+pub(crate) fn start_distance(c: &NonlinearCast) -> Option<Real> {
+    let pos12 = c.m1.position_at_time(c.t0).inv_mul(&c.m2.position_at_time(c.t0));
+    exact_contact(&pos12, c.g1, c.g2, None).map(|k| k.dist)
+}
+
+/// Whether shapes at signed distance `d0` at the start of `c` are in contact there.
+pub(crate) fn in_contact(c: &NonlinearCast, d0: Real) -> bool {
+    d0 <= CastPolicy::START_CONTACT_GAP * pair_size(c.g1, c.g2)
+}
+
+/// Rule 3 of the module docs for a cast whose shapes are at signed distance `d0` ≤ the contact
+/// gap at its start: the earlier of the core's contact and the translation's deepening below
+/// min(−A, d₀ − A), at least [`CastPolicy::START_NUDGE`] of the window after the start. `level`
+/// answers the first time the signed distance of the pair moving by the two given motions comes
+/// down to a level (the gap tracker, or the half-space cast on a shifted plane).
+pub(crate) fn start_contact_answer(
+    c: &NonlinearCast,
+    d0: Real,
+    opts: &ToiOptions,
+    level: impl Fn(&NonlinearRigidMotion, &NonlinearRigidMotion, Real) -> Result<TimeOfImpact, QueryError>,
+) -> Result<Option<ShapeCastHit>, Unsupported> {
+    let f = fast(c);
+    let r = inradius_about(f.g, f.m.local_center);
+    let window = c.t1 - c.t0;
+    let nudge = c.t0 + CastPolicy::START_NUDGE * window;
+    let answers = |r: Result<TimeOfImpact, QueryError>| match r {
+        Ok(t) if t.status == ToiStatus::NoHit => Ok(None),
+        Ok(t) => Ok(Some(t)),
+        Err(e) => Err(e),
+    };
+    // The core: a disc about the rotation centre, moving with it (its spin does not move it).
+    let t_core = if r > 0.0 {
+        let core = Ball::new(CastPolicy::CORE * r);
+        let centre = NonlinearRigidMotion::new(
+            Pose::from_translation(f.m.start * f.m.local_center),
+            Vector::ZERO,
+            f.m.linvel,
+            0.0,
+        );
+        let plain = ToiOptions {
+            stop_at_penetration: false,
+            path: MotionPath::ConstantSpin,
+            ..*opts
+        };
+        answers(super::cast::shape_time_of_impact(&core, &centre, f.other_g, f.other_m, c.t0, c.t1, &plain))
+    } else {
+        Ok(None)
+    };
+    let t_core = match t_core {
+        Ok(t) => t,
+        Err(e) => return toi_to_parry(Err(e)),
+    };
+    // The translation: the motions without their spins, down to min(−A, d₀ − A).
+    let allowance = CastPolicy::ALLOWANCE * r.max(CastPolicy::START_CONTACT_GAP * pair_size(c.g1, c.g2));
+    let target = (-allowance).min(d0 - allowance);
+    let (m1, m2) = (
+        NonlinearRigidMotion { angvel: 0.0, ..*c.m1 },
+        NonlinearRigidMotion { angvel: 0.0, ..*c.m2 },
+    );
+    let t_trans = match answers(level(&m1, &m2, target)) {
+        Ok(t) => t,
+        Err(e) => return toi_to_parry(Err(e)),
+    };
+    let earliest = match (t_trans, t_core) {
+        (Some(a), Some(b)) => Some(a.time.min(b.time)),
+        (Some(a), None) => Some(a.time),
+        (None, Some(b)) => Some(b.time),
+        (None, None) => None,
+    };
+    toi_to_parry(Ok(earliest.map(|t| hit_at(c, t.max(nudge), d0))))
+}
+
+/// The hit of a start contact at time `t`, with the pair's exact contact there for its
+/// witnesses and distance (rapier reads only the time; the witnesses are the pair's own, in
+/// each shape's frame), or the start's distance `d0` and no witnesses when the contact query
+/// does not read the pair.
+fn hit_at(c: &NonlinearCast, t: Real, d0: Real) -> TimeOfImpact {
+    let pos12 = c.m1.position_at_time(t).inv_mul(&c.m2.position_at_time(t));
+    let k = exact_contact(&pos12, c.g1, c.g2, None);
+    let (distance, point1, point2, normal1) = match &k {
+        Some(k) => (k.dist, k.points[0].point1, pos12.inverse_transform_point(k.points[0].point2), k.normal),
+        None => (d0, Vector::ZERO, Vector::ZERO, Vector::X),
+    };
+    TimeOfImpact {
+        status: ToiStatus::PenetratingAtStart,
+        time: t,
+        distance,
+        distance_rate: 0.0,
+        point1,
+        point2,
+        normal1,
+        normal2: pos12.rotation.inverse() * -normal1,
+        cost: Default::default(),
+    }
+}
