@@ -56,7 +56,11 @@ fn main() {
     if std::env::var("BREAKDOWN").is_ok() {
         for spin in common::ccd_scenes::SPINS {
             for speed in common::ccd_scenes::SPEEDS {
-                let sel: Vec<_> = cases.iter().zip(&outcomes).filter(|(c, _)| c.spin == spin && c.speed == speed).collect();
+                let sel: Vec<_> = cases
+                    .iter()
+                    .zip(&outcomes)
+                    .filter(|(c, _)| c.spin == spin && c.speed == speed)
+                    .collect();
                 let th = sel.iter().filter(|(_, o)| o[0].through.is_some()).count();
                 let fr = sel.iter().filter(|(_, o)| o[0].frozen.is_some()).count();
                 let thr = sel.iter().filter(|(_, o)| o[1].through.is_some()).count();
@@ -68,7 +72,10 @@ fn main() {
             let th = sel.iter().filter(|(_, o)| o[0].through.is_some()).count();
             let fr = sel.iter().filter(|(_, o)| o[0].frozen.is_some()).count();
             let thr = sel.iter().filter(|(_, o)| o[1].through.is_some()).count();
-            println!("{:16}: smooth through {th:3} frozen {fr:3} | rapier through {thr:3}", body.name());
+            println!(
+                "{:16}: smooth through {th:3} frozen {fr:3} | rapier through {thr:3}",
+                body.name()
+            );
         }
     }
     println!("({:.1} s)", t.elapsed().as_secs_f64());

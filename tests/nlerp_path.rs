@@ -11,9 +11,7 @@ use common::{generate, reference_toi_with, RefOutcome, RefToiOptions, Scenario, 
 use parry2d_f64::math::Pose;
 use parry2d_f64::query::sweep_toi::Sweep;
 use parry2d_f64::query::NonlinearRigidMotion;
-use smooth_ccd2d::{
-    shape_time_of_impact, MotionPath, QueryError, TimeOfImpact, ToiOptions, ToiStatus,
-};
+use smooth_ccd2d::{shape_time_of_impact, MotionPath, QueryError, TimeOfImpact, ToiOptions, ToiStatus};
 
 /// Scenarios per class.
 const CASES: u64 = 300;
@@ -23,7 +21,7 @@ const CASES: u64 = 300;
 fn one_turning(seed: u64, class: ScenarioClass) -> Scenario {
     let mut s = generate(class, seed);
     s.motion2.angvel = 0.0;
-    if seed % 3 == 0 {
+    if seed.is_multiple_of(3) {
         s.motion1.angvel *= 4.0;
     }
     s
@@ -65,8 +63,25 @@ fn the_nlerp_path_time_of_impact_matches_the_reference_on_the_same_path() {
                 nlerp: true,
                 ..Default::default()
             };
-            let rf = reference_toi_with(s.curve1(), &s.motion1, s.curve2(), &s.motion2, s.t0, s.t1, s.target, &opts);
-            let ctx = || format!("{} seed {seed}: ours {:?} at {}; reference {:?}", class.name(), r.status, r.time, rf.outcome);
+            let rf = reference_toi_with(
+                s.curve1(),
+                &s.motion1,
+                s.curve2(),
+                &s.motion2,
+                s.t0,
+                s.t1,
+                s.target,
+                &opts,
+            );
+            let ctx = || {
+                format!(
+                    "{} seed {seed}: ours {:?} at {}; reference {:?}",
+                    class.name(),
+                    r.status,
+                    r.time,
+                    rf.outcome
+                )
+            };
             total += 1;
             if rf.initially_within_target {
                 assert_eq!(r.status, ToiStatus::PenetratingAtStart, "{}", ctx());

@@ -887,16 +887,42 @@ fn shapes_are_custom_convex_with_support_and_feature_maps() {
 }
 
 #[test]
-fn ccd_thickness_follows_parry_conventions() {
+fn ccd_thickness_is_the_inradius_about_the_centroid() {
+    // The distance from the centroid (rapier's rotation centre) to the boundary: rapier sweeps a
+    // body that moves more than a fraction of it in a step.
     assert_eq!(Ellipse::new(2.0, 0.3).ccd_thickness(), 0.3);
     for (n, r) in [(3, 0.0), (5, 0.2), (8, 1.0)] {
         let p = RoundedPolygon::regular(n, 1.0, r);
+        let inradius = (std::f64::consts::PI / n as f64).cos() + r;
+        assert!((p.ccd_thickness() - inradius).abs() < 1e-14, "{n} {r}");
         let parry: RoundShape<ConvexPolygon> = p.to_parry().unwrap();
-        assert!((p.ccd_thickness() - parry.ccd_thickness()).abs() < 1e-14);
         assert_eq!(p.ccd_angular_thickness(), parry.ccd_angular_thickness());
     }
-    let c = CapsuleEllipse::new(0.5, 1.0, 0.8);
-    assert!((c.ccd_thickness() - 0.65).abs() < 1e-12);
+    // A thin sliver turned off its axes: its box is wide, the body is not.
+    let sliver = RoundedPolygon::new(
+        &[Vector::new(-0.5, -0.5), Vector::new(0.5, 0.4), Vector::new(0.4, 0.5)],
+        0.0,
+    );
+    let c = sliver.mass_properties(1.0).local_com;
+    let by_projection = (sliver.project_local_point(c, false).point - c).length();
+    assert!((sliver.ccd_thickness() - by_projection).abs() < 1e-12);
+    assert!(sliver.ccd_thickness() < 0.05, "{}", sliver.ccd_thickness());
+    // CapsuleEllipse (r1 = 0.5, r2 = 1.0, r3 = 0.8): its centroid and the nearest boundary point,
+    // against point projection.
+    let cap = CapsuleEllipse::new(0.5, 1.0, 0.8);
+    let c = cap.mass_properties(1.0).local_com;
+    let by_projection = (cap.project_local_point(c, false).point - c).length();
+    assert!(
+        (cap.ccd_thickness() - by_projection).abs() < 1e-9,
+        "{} {by_projection}",
+        cap.ccd_thickness()
+    );
+    // A custom curve (an ellipse 1.3 × 0.4 off its origin): its semi-minor axis.
+    assert!(
+        (custom_ellipse().ccd_thickness() - 0.4).abs() < 1e-9,
+        "{}",
+        custom_ellipse().ccd_thickness()
+    );
 }
 
 #[test]

@@ -523,17 +523,20 @@ fn same_scene_twice_is_bit_identical() {
 }
 
 /// Bodies already in the floor when rapier's CCD sweeps them (`stop_at_penetration = false`,
-/// recorded in the box pile) are reported where their contact first gets a quarter of the
-/// thinner `ccd_thickness` deeper (or a tenth of that below a contact already as deep), or not at
-/// all when it does not within the step: checked against the reference signed distance (dense
-/// sampling, independent of the crate's queries) at the answer, a resolution before it, and on
-/// 400 times before it (or over the whole step for no hit).
+/// recorded in the box pile) are reported by rapier's rule (`CastPolicy::Rapier`): at the
+/// earlier of the translation alone (the motion without its spin) taking the contact an
+/// allowance A = ¼·r deeper than min(0, its start depth) and the core, the disc of ¼·r about
+/// the rotation centre, reaching the floor (r the body's inradius about that centre), or not
+/// at all when neither happens within the step. Checked against independent references: the
+/// signed distance by dense sampling of the translating body, parry's distance from the centre
+/// to the floor box, and r by parry's point projection; both stay above their levels on 400
+/// times before the answer (the whole step for no hit) and one reaches its level there.
 #[test]
-fn bodies_resting_in_the_floor_are_swept_to_where_the_contact_deepens_by_the_allowance() {
+fn bodies_resting_in_the_floor_are_swept_by_their_translation_and_core() {
     use common::reference::{pair_size, reference_distance_at};
     use common::scenes::resting_sweeps;
-    use parry2d_f64::query::QueryDispatcher;
-    use parry2d_f64::shape::Shape;
+    use parry2d_f64::query::{NonlinearRigidMotion, PointQuery, QueryDispatcher};
+    use smooth_ccd2d::CastPolicy;
     let d = SmoothDispatcher::default();
     let dt = 1.0 / 60.0;
     for s in resting_sweeps() {
@@ -548,38 +551,61 @@ fn bodies_resting_in_the_floor_are_swept_to_where_the_contact_deepens_by_the_all
             0.0,
         );
         let body = s.body.shared();
+        let sliding = NonlinearRigidMotion {
+            angvel: 0.0,
+            ..s.motion
+        };
         let signed =
-            |t: f64| reference_distance_at(s.body.curve(), &s.motion, &floor_curve, &s.floor_motion, t).distance;
+            |t: f64| reference_distance_at(s.body.curve(), &sliding, &floor_curve, &s.floor_motion, t).distance;
+        let c = s.motion.local_center;
+        let r = (body.project_local_point(c, false).point - c).length();
+        let core = |t: f64| {
+            let centre = s.motion.position_at_time(t) * c;
+            s.floor.distance_to_point(&s.floor_motion.start, centre, true) - CastPolicy::CORE * r
+        };
         let size = pair_size(s.body.curve(), &floor_curve);
         let tol = 1e-12 * size;
-        let thickness = body.ccd_thickness().min(s.floor.ccd_thickness());
-        let allowance = 0.25 * thickness;
+        let allowance = CastPolicy::ALLOWANCE * r;
         let d0 = signed(0.0);
-        let target = (-allowance).min(d0 - 0.1 * allowance);
+        let target = (-allowance).min(d0 - allowance);
         assert!(d0 < 0.0, "{}: in the floor at the start ({d0})", s.name);
         let hit = d
             .cast_shapes_nonlinear(&s.motion, &*body, &s.floor_motion, &s.floor, 0.0, dt, false)
             .expect("answered");
         assert_eq!(hit.is_some(), s.deepens, "{}: {hit:?}", s.name);
-        // Above the target until the answer (the whole step for no hit).
+        // Above both levels until the answer (the whole step for no hit).
         let until = hit.map_or(dt, |h| h.time_of_impact - 2e-9 * dt);
         for k in 0..=400 {
             let t = until * k as f64 / 400.0;
             assert!(signed(t) >= target - tol, "{}: below the target at {t}", s.name);
+            assert!(core(t) >= -tol, "{}: the core in the floor at {t}", s.name);
         }
         match hit {
             Some(hit) => {
                 let t = hit.time_of_impact;
-                let at = signed(t);
+                let (at, core_at) = (signed(t), core(t));
                 println!(
-                    "{}: depth {d0:.4e} at the start, hit at {:.6} of the step, D there {at:.6e}, target {target:.6e}",
+                    "{}: depth {d0:.4e} at the start, hit at {:.6} of the step, D there {at:.6e} \
+                     (target {target:.6e}), the core {core_at:.3e} from the floor",
                     s.name,
                     t / dt
                 );
                 assert!(t > 0.0 && t <= dt, "{}: {t}", s.name);
-                assert!(at < target + tol, "{}: {at} at the answer", s.name);
+                assert!(
+                    at < target + tol || core_at < tol,
+                    "{}: {at} {core_at} at the answer",
+                    s.name
+                );
             }
-            None => println!("{}: depth {d0:.4e} at the start, no hit (target {target:.6e})", s.name),
+            None => {
+                let lowest = (0..=400)
+                    .map(|k| signed(dt * k as f64 / 400.0))
+                    .fold(f64::INFINITY, f64::min);
+                println!(
+                    "{}: depth {d0:.4e} at the start, no hit (the translation down to {lowest:.6e}, target {target:.6e})",
+                    s.name
+                )
+            }
         }
     }
 }

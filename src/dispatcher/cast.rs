@@ -7,9 +7,9 @@
 use super::composite::composite_cast_nonlinear;
 use super::input_guard;
 use super::parry_fallback::parry_cast_nonlinear;
-use super::route::{curves_toi, pair_distance, route_cast, CurveOf, Route, RouteScratch};
-use super::rapier_rule::{in_contact, rapier_path, start_contact_answer, start_distance, CastPolicy};
 use super::parry_fallback::parry_nonlinear_without_stop;
+use super::rapier_rule::{in_contact, rapier_path, start_contact_answer, start_distance, CastPolicy};
+use super::route::{curves_toi, pair_distance, route_cast, CurveOf, Route, RouteScratch};
 use super::SmoothDispatcher;
 use crate::error::QueryError;
 use crate::numerics::math::{Pose, Real};
@@ -272,6 +272,7 @@ pub(crate) fn is_window(t0: Real, t1: Real) -> bool {
 mod tests {
     use super::*;
     use crate::dispatcher::route::RouteScratch;
+    use crate::dispatcher::support_shape::exact_contact;
     use crate::numerics::math::{Pose, Vector};
     use crate::{CapsuleEllipse, Ellipse, RoundedPolygon};
     use parry2d_f64::shape::{Ball, Cuboid};

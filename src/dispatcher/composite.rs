@@ -131,17 +131,110 @@ macro_rules! composite_helpers {
             t1: Real,
             stop: bool,
         ) -> Result<Option<ShapeCastHit>, Unsupported> {
-            if let Some(c1) = g1.as_composite_shape() {
-                Ok(details::cast_shapes_nonlinear_composite_shape_shape(
+            let still = |m: &NonlinearRigidMotion| m.linvel == Vector::ZERO && m.angvel == 0.0;
+            match (g1.as_composite_shape(), g2.as_composite_shape()) {
+                // A convex shape against a composite at rest (rapier's CCD against a polyline, a
+                // mesh or a compound of the static world): the parts culled by the shape's swept
+                // bounding circle, each cast in the caller's order.
+                (None, Some(c2)) if still(m2) => Ok(cast_against_still_composite(
+                    d, m1, g1, m2, c2, t0, t1, stop, false,
+                )),
+                (Some(c1), None) if still(m1) => Ok(cast_against_still_composite(
+                    d, m2, g2, m1, c1, t0, t1, stop, true,
+                )),
+                (Some(c1), _) => Ok(details::cast_shapes_nonlinear_composite_shape_shape(
                     d, m1, c1, m2, g2, t0, t1, stop,
-                ))
-            } else if let Some(c2) = g2.as_composite_shape() {
-                Ok(details::cast_shapes_nonlinear_shape_composite_shape(
+                )),
+                (None, Some(c2)) => Ok(details::cast_shapes_nonlinear_shape_composite_shape(
                     d, m1, g1, m2, c2, t0, t1, stop,
-                ))
-            } else {
-                Err(Unsupported)
+                )),
+                (None, None) => Err(Unsupported),
             }
+        }
+
+        /// The nonlinear cast of the convex `body` moving by `mb` against the composite `comp` at
+        /// rest at `mc`'s pose, the pair in the caller's order (`comp` first when
+        /// `comp_first`). The earliest hit over the composite's parts, each part cast by `d`;
+        /// the BVH is walked from the earliest time the body's bounding circle about its
+        /// rotation centre — which its spin does not move — can reach a node's box (the ray of
+        /// the centre against the box grown by the circle's radius, a lower bound on any hit
+        /// of a part inside it), so parts the body cannot reach are never cast.
+        #[allow(clippy::too_many_arguments)]
+        fn cast_against_still_composite(
+            d: &$dispatcher,
+            mb: &NonlinearRigidMotion,
+            body: &dyn Shape,
+            mc: &NonlinearRigidMotion,
+            comp: &dyn $parry::shape::CompositeShape,
+            t0: Real,
+            t1: Real,
+            stop: bool,
+            comp_first: bool,
+        ) -> Option<ShapeCastHit> {
+            let pose = mc.start;
+            // The body's rotation centre in the composite's frame: c(t) = c0 + v·t.
+            let c0 = pose.inverse_transform_point(mb.start * mb.local_center);
+            let v = pose.rotation.inverse() * mb.linvel;
+            let sphere = body.compute_local_bounding_sphere();
+            let reach = sphere.radius + (sphere.center - mb.local_center).length();
+            // The first time in [t0, t1] at which c(t) enters the box grown by `reach`.
+            let entry = |mins: Vector, maxs: Vector| -> Real {
+                let (lo, hi) = (mins - Vector::splat(reach), maxs + Vector::splat(reach));
+                let (mut a, mut b) = (t0, t1);
+                for k in 0..2 {
+                    let (p, s) = (c0[k], v[k]);
+                    if s == 0.0 {
+                        if p < lo[k] || p > hi[k] {
+                            return Real::MAX;
+                        }
+                    } else {
+                        let (ta, tb) = ((lo[k] - p) / s, (hi[k] - p) / s);
+                        a = a.max(ta.min(tb));
+                        b = b.min(ta.max(tb));
+                    }
+                }
+                // NaN (absurd input) reads as "may hit at once": the parts' casts decide.
+                if a <= b {
+                    a
+                } else if a.is_nan() || b.is_nan() {
+                    t0
+                } else {
+                    Real::MAX
+                }
+            };
+            let cost = |node: &$parry::partitioning::BvhNode, _best: Real| entry(node.mins(), node.maxs());
+            use $parry::query::QueryDispatcher as _;
+            use $parry::shape::TypedCompositeShape as _;
+            let leaf = |part: u32, _best: Real| -> Option<ShapeCastHit> {
+                comp.map_untyped_part_at(part, |part_pose, part_shape, _| {
+                    let mp = match part_pose {
+                        Some(p) => mc.prepend(*p),
+                        None => *mc,
+                    };
+                    let r = if comp_first {
+                        d.cast_shapes_nonlinear(&mp, part_shape, mb, body, t0, t1, stop)
+                    } else {
+                        d.cast_shapes_nonlinear(mb, body, &mp, part_shape, t0, t1, stop)
+                    };
+                    r.ok().flatten().map(|mut hit| {
+                        if let Some(p) = part_pose {
+                            if comp_first {
+                                hit = hit.transform1_by(p);
+                            } else {
+                                hit.witness2 = p * hit.witness2;
+                                hit.normal2 = p.rotation * hit.normal2;
+                            }
+                        }
+                        if comp_first {
+                            hit.subshape1 = part;
+                        } else {
+                            hit.subshape2 = part;
+                        }
+                        hit
+                    })
+                })?
+            };
+            comp.bvh().find_best(Real::MAX, cost, leaf).map(|(_, hit)| hit)
         }
 
         /// Whether one side is a shape parry decomposes (composite, trimesh, heightfield, voxels).

@@ -126,7 +126,7 @@ mod tests {
     use super::*;
     use crate::dispatcher::support_shape::{support_shape, SupportScratch};
     use crate::{CapsuleEllipse, Ellipse, RoundedPolygon};
-        use parry2d_f64::shape::{Ball, Cuboid, Segment, Shape};
+    use parry2d_f64::shape::{Ball, Cuboid, Segment, Shape};
 
     /// The centroid of parry's mass properties and, the reference's radius, the smallest
     /// support value about it over 200,000 directions (the distance from an inner point to the

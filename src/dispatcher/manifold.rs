@@ -536,14 +536,21 @@ mod tests {
     }
 
     #[test]
-    fn ellipse_on_box_is_one_exact_point() {
+    fn ellipse_on_box_is_one_exact_point_and_its_core_contact() {
         let e = Ellipse::new(0.5, 0.2);
         let b = Cuboid::new(Vector::new(2.0, 0.5));
         // Ellipse 0.19 above the box top (penetration 0.01).
         let pos12 = Pose::translation(0.1, 0.69);
         let m = manifolds(&b, &e, &pos12, 0.0);
         assert_eq!(m.len(), 1);
-        assert_eq!(m[0].points.len(), 1);
+        assert_eq!(m[0].points.len(), 2);
+        // The core contact: the point of the ellipse's core (half its inradius 0.2 about its
+        // centre) facing the box, 0.19 − 0.1 above the box's face.
+        let k = &m[0].points[1];
+        assert!((k.dist - 0.09).abs() < 1e-12, "{}", k.dist);
+        assert!((k.local_p2 - Vector::new(0.0, -0.1)).length() < 1e-12);
+        assert!((k.local_p1 - Vector::new(0.1, 0.5)).length() < 1e-12);
+        assert_eq!(k.fid2, vertex_id(CORE_FEATURE));
         let p = &m[0].points[0];
         assert!((p.dist + 0.01).abs() < 1e-12, "{}", p.dist);
         assert!((m[0].local_n1 - Vector::Y).length() < 1e-12);
@@ -557,10 +564,16 @@ mod tests {
         assert!((q.dist - p.dist).abs() < 1e-12);
         assert!((q.local_p1 - p.local_p2).length() < 1e-9);
         assert_eq!(q.fid2, p.fid1);
-        // Apart beyond the prediction: no point; within it: one.
+        assert_eq!(m2[0].points.len(), 2);
+        assert_eq!(m2[0].points[1].fid1, vertex_id(CORE_FEATURE));
+        // Apart beyond the prediction: no point; within it: the exact point, and the core
+        // contact with it (kept beyond the prediction, as the solver's second point).
         let far = Pose::translation(0.0, 0.75);
         assert!(manifolds(&b, &e, &far, 0.01).iter().all(|m| m.points.is_empty()));
-        assert_eq!(manifolds(&b, &e, &far, 0.1)[0].points.len(), 1);
+        let near = manifolds(&b, &e, &far, 0.1);
+        assert_eq!(near[0].points.len(), 2);
+        assert!((near[0].points[0].dist - 0.05).abs() < 1e-12);
+        assert!((near[0].points[1].dist - 0.15).abs() < 1e-12);
     }
 
     #[test]
@@ -598,7 +611,8 @@ mod tests {
         let pos12 = Pose::translation(-1.0, 0.69);
         let m = manifolds(&b, &compound, &pos12, 0.0);
         let pts: Vec<_> = m.iter().flat_map(|m| m.points.iter()).collect();
-        assert_eq!(pts.len(), 1);
+        // The exact point and the ellipse's core contact.
+        assert_eq!(pts.len(), 2);
         assert!((pts[0].dist + 0.01).abs() < 1e-12);
         assert_eq!(m.iter().find(|m| !m.points.is_empty()).unwrap().subshape2, 0);
     }

@@ -5,44 +5,33 @@
 //! Which pairs it answers itself ("ours"): one shape is an [`crate::Ellipse`], [`crate::RoundedPolygon`],
 //! [`crate::CapsuleEllipse`] or [`crate::CustomCurve`], and the other is one of those or a parry `Ball`,
 //! `Cuboid`, `RoundCuboid`, `Capsule`, `Segment`, `Triangle`, `RoundTriangle`, `ConvexPolygon`
-//! or `RoundConvexPolygon` (converted to a [`crate::RoundedPolygon`] or [`crate::BallCurve`]), provided one of
-//! the two is strictly convex (object2 of the specification). Pairs where neither is strictly
-//! convex (e.g. rounded polygon against a box) go to parry through the shapes' support maps,
-//! which is exact for these polygonal pairs. Against a `HalfSpace` the distance is closed-form
-//! and the nonlinear cast is [`crate::time_of_impact_halfspace`]. A composite shape (compound, polyline,
-//! trimesh, heightfield) on either side is decomposed by parry's composite helpers with *this*
-//! dispatcher answering the sub-queries, so smooth shapes inside composites keep exact answers.
+//! or `RoundConvexPolygon` (converted to a [`crate::RoundedPolygon`] or [`crate::BallCurve`] on the
+//! stack). A pair with a strictly convex side gets the φ–t tracker of [`crate::time_of_impact`];
+//! a pair of two polygonal sides (a rounded polygon against a box) the gap tracker; a
+//! `HalfSpace` the closed-form distance and [`crate::time_of_impact_halfspace`]. A composite
+//! shape (compound, polyline, trimesh, heightfield) on either side is decomposed by parry's
+//! composite helpers with *this* dispatcher answering the sub-queries, so smooth shapes inside
+//! composites keep exact answers.
 //!
 //! Semantics are parry's: `pos12` is shape 2's pose in shape 1's frame, witnesses and normals are
 //! in each shape's local frame, `distance` is 0 for touching or penetrating shapes, a cast hit's
 //! status is `Converged`, `PenetratingOrWithinTargetDist` or `OutOfIterations`
 //! ([`crate::ToiStatus::to_parry`]).
 //!
-//! One deliberate difference, for rapier, chosen by [`StartContactPolicy`] (the default is
-//! [`StartContactPolicy::RapierAllowance`]): with `stop_at_penetration = false` (rapier's CCD of
-//! solid bodies) and shapes in contact at the start (penetrating, or within
-//! [`StartContactPolicy::START_CONTACT_GAP`] of the pair's size), the nonlinear cast reports the
-//! first time the contact gets deeper than the *allowance*, [`StartContactPolicy::ALLOWANCE`] (a
-//! quarter) of the thinner shape's `ccd_thickness` — or, for a contact already about that deep,
-//! [`StartContactPolicy::DEEPER_FRACTION`] of the allowance deeper than at the start — and no
-//! hit when it does not within the window (at the earliest [`StartContactPolicy::START_NUDGE`] of
-//! the window after the start). rapier discards hits at exactly the start time, so answering the start time
-//! (as [`crate::time_of_impact`] does) would let a fast body in shallow contact pass through a
-//! thin wall; answering just after it freezes a body that spins against a wall (rapier keeps its
-//! velocity, its one-point contact does not see the spin, and the next step freezes it again);
-//! answering "no hit" for a contact that approaches slowly at the start lets a spinning ellipse
-//! turn its tip deep into the wall within the step. The allowance bounds the penetration a step
-//! adds and lets the body move on. The deepening is found on the signed distance along the
-//! motions (16 samples, then bisection), and for a fast approach no later than when the start
-//! rate alone reaches the target. A separating contact at the start is looked past
-//! ([`crate::time_of_impact`]), with the same bound on a later deepening.
+//! One deliberate difference, for rapier, chosen by [`CastPolicy`] (the default is
+//! [`CastPolicy::Rapier`]; its module docs give the argument): `cast_shapes_nonlinear` follows
+//! the path rapier's CCD clamp applies ([`crate::MotionPath::Nlerp`]), and with
+//! `stop_at_penetration = false` (rapier's CCD of solid bodies) a contact at the start of the
+//! window is answered by what the step's translation does to it — the first time the fast
+//! body's core reaches the target or its translation takes the contact
+//! [`CastPolicy::ALLOWANCE`] of its inradius deeper — never at the start time itself, which
+//! rapier discards. [`CastPolicy::Plain`] gives [`crate::time_of_impact`]'s answers unchanged.
 //!
-//! The same rule applies to pairs of this crate's shapes that parry answers (no strictly convex
-//! side), whose start contact comes from parry's contact. For these pairs parry's support-map
-//! contact and manifold can come back empty for shapes that nearly touch (GJK/EPA give up on
-//! parallel faces 10⁻¹⁰ apart, exactly where rapier's CCD leaves a body); the dispatcher then
-//! computes them on the shapes pushed 10⁻⁸ of their size into each other and measures the
-//! distances at the true pose (`parry_fallback::parry_contact`, and `touching_manifold` in the `manifold` module).
+//! For the polygonal pairs parry's support-map contact and manifold can come back empty for
+//! shapes that nearly touch (GJK/EPA give up on parallel faces 10⁻¹⁰ apart, exactly where
+//! rapier's CCD leaves a body); where the dispatcher hands such a pair to parry it computes them
+//! on the shapes pushed 10⁻⁸ of their size into each other and measures the distances at the
+//! true pose (`parry_fallback::parry_contact`, and `touching_manifold` in the `manifold` module).
 //!
 //! # Layout
 //!
@@ -51,7 +40,9 @@
 //! * `queries`: parry's `QueryDispatcher` (intersection, distance, contact, closest points, casts);
 //! * `manifold`: parry's `PersistentQueryDispatcher` (rapier's contact manifolds);
 //! * `composite`: composite shapes decomposed by parry's helpers with this dispatcher inside;
-//! * `start_contact`: the [`StartContactPolicy`] of the nonlinear cast;
+//! * `cast`: the nonlinear cast, routed, with the [`CastPolicy`] applied;
+//! * `rapier_rule`: [`CastPolicy`] and rapier's rules (the clamp path, a contact at the start);
+//! * `core_disc`: the shapes' cores, and the manifold's core contact;
 //! * `parry_fallback`: parry's answers made robust (nearly touching contacts, windows not at 0);
 //! * `input_guard`: what is refused before parry sees it.
 
@@ -64,8 +55,8 @@ mod manifold;
 pub(crate) mod parry_fallback;
 mod parry_pairs;
 mod queries;
-pub(crate) mod route;
 pub(crate) mod rapier_rule;
+pub(crate) mod route;
 pub(crate) mod support_shape;
 
 pub use cast::shape_time_of_impact;
@@ -82,16 +73,16 @@ use route::{pair_distance, route, Route, RouteScratch};
 /// The query dispatcher of this crate: exact smooth-shape queries, parry for everything else.
 ///
 /// Drop it into rapier with `NarrowPhase::with_query_dispatcher(SmoothDispatcher::default())`:
-/// the default options and [`StartContactPolicy::RapierAllowance`] are what rapier's CCD needs.
-/// Other callers of `cast_shapes_nonlinear` with `stop_at_penetration = false` who want parry's
-/// plain semantics choose [`StartContactPolicy::Plain`]:
+/// the default options and [`CastPolicy::Rapier`] are what rapier's CCD needs. Other callers
+/// of `cast_shapes_nonlinear` who want the crate's time of impact as it is (parry's
+/// constant-spin motions and `stop_at_penetration` semantics) choose [`CastPolicy::Plain`]:
 ///
 /// ```
-/// use smooth_ccd2d::{SmoothDispatcher, StartContactPolicy};
+/// use smooth_ccd2d::{CastPolicy, SmoothDispatcher};
 /// let for_rapier = SmoothDispatcher::default();
-/// assert_eq!(for_rapier.start_contact, StartContactPolicy::RapierAllowance);
-/// let plain = SmoothDispatcher::default().with_start_contact(StartContactPolicy::Plain);
-/// assert_eq!(plain.start_contact, StartContactPolicy::Plain);
+/// assert_eq!(for_rapier.cast_policy, CastPolicy::Rapier);
+/// let plain = SmoothDispatcher::default().with_cast_policy(CastPolicy::Plain);
+/// assert_eq!(plain.cast_policy, CastPolicy::Plain);
 /// ```
 #[derive(Clone, Debug)]
 #[non_exhaustive]

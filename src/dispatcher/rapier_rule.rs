@@ -46,9 +46,9 @@
 //! parts over as shape 1, still).
 
 use super::cast::{toi_to_parry, NonlinearCast};
+use super::core_disc::core_of;
 use super::parry_fallback::pair_size;
 use super::support_shape::{exact_contact, support_shape, SupportScratch};
-use super::core_disc::core_of;
 use crate::error::QueryError;
 use crate::numerics::math::{Pose, Real, Vector};
 use crate::query::path::MotionPath;
@@ -136,24 +136,32 @@ fn fast<'a>(c: &NonlinearCast<'a>) -> Fast<'a> {
 /// The distance from `centre` to the boundary of `g` (0 when `centre` is not inside): exact from
 /// the shape's core for the shapes the contact query reads, else by point projection.
 pub(crate) fn inradius_about(g: &dyn Shape, centre: Vector) -> Real {
+    use crate::query::contact::SupportShape;
     let mut scratch = SupportScratch::default();
-    if let Some(k) = support_shape(g, &mut scratch).and_then(core_of) {
-        // The polygon's own edge distances are exact about any point; other cores are discs.
-        if let Some(s) = support_shape(g, &mut SupportScratch::default()) {
-            if let crate::query::contact::SupportShape::Polygon { vertices, normals, radius } = s {
-                let d = (0..vertices.len())
-                    .map(|i| normals[i].dot(vertices[i] - centre))
-                    .fold(Real::INFINITY, Real::min);
-                return (d + radius).max(0.0);
-            }
+    match support_shape(g, &mut scratch) {
+        // A polygon's edge lines give the exact distance about any point inside.
+        Some(SupportShape::Polygon {
+            vertices,
+            normals,
+            radius,
+        }) => {
+            let d = (0..vertices.len())
+                .map(|i| normals[i].dot(vertices[i] - centre))
+                .fold(Real::INFINITY, Real::min);
+            (d + radius).max(0.0)
         }
-        return k.radius_about(centre);
-    }
-    let p = g.project_local_point(centre, false);
-    if p.is_inside {
-        (p.point - centre).length()
-    } else {
-        0.0
+        // Other cores are discs about the centroid; other shapes by point projection.
+        s => match s.and_then(core_of) {
+            Some(k) => k.radius_about(centre),
+            None => {
+                let p = g.project_local_point(centre, false);
+                if p.is_inside {
+                    (p.point - centre).length()
+                } else {
+                    0.0
+                }
+            }
+        },
     }
 }
 
@@ -214,7 +222,9 @@ pub(crate) fn start_contact_answer(
             path: MotionPath::ConstantSpin,
             ..*opts
         };
-        answers(super::cast::shape_time_of_impact(&core, &centre, f.other_g, f.other_m, c.t0, c.t1, &plain))
+        answers(super::cast::shape_time_of_impact(
+            &core, &centre, f.other_g, f.other_m, c.t0, c.t1, &plain,
+        ))
     } else {
         Ok(None)
     };
@@ -250,7 +260,12 @@ fn hit_at(c: &NonlinearCast, t: Real, d0: Real) -> TimeOfImpact {
     let pos12 = c.m1.position_at_time(t).inv_mul(&c.m2.position_at_time(t));
     let k = exact_contact(&pos12, c.g1, c.g2, None);
     let (distance, point1, point2, normal1) = match &k {
-        Some(k) => (k.dist, k.points[0].point1, pos12.inverse_transform_point(k.points[0].point2), k.normal),
+        Some(k) => (
+            k.dist,
+            k.points[0].point1,
+            pos12.inverse_transform_point(k.points[0].point2),
+            k.normal,
+        ),
         None => (d0, Vector::ZERO, Vector::ZERO, Vector::X),
     };
     TimeOfImpact {

@@ -68,7 +68,9 @@ impl CurveOf<'_> {
     pub(crate) fn any_side(&self) -> Option<Side<'_>> {
         self.gap_side().or_else(|| {
             let curve = self.get();
-            curve.is_strictly_convex().then_some(Side::Curve(CurveSide { curve, faces: &[] }))
+            curve
+                .is_strictly_convex()
+                .then_some(Side::Curve(CurveSide { curve, faces: &[] }))
         })
     }
 

@@ -158,6 +158,7 @@ impl Clock {
     }
 
     /// The clock time at which the translation has done the fraction `s` ∈ [0, 1] (σ⁻¹).
+    #[cfg(test)]
     pub(crate) fn time_of_fraction(&self, s: f64) -> f64 {
         let s = s.clamp(0.0, 1.0);
         let w = ((2.0 * s - 1.0) * self.k).atan();
@@ -173,21 +174,11 @@ impl Clock {
 
 /// The clock of a path as the trackers see it: the identity (`None`) or a [`Clock`].
 pub(crate) trait ClockExt {
-    /// τ, τ′, τ″ at `t`.
-    fn jet_at(&self, t: f64) -> ClockJet;
     /// Bounds of the derivatives between `ta` and `tb`.
     fn bounds_over(&self, ta: f64, tb: f64) -> ClockBounds;
 }
 
 impl ClockExt for Option<Clock> {
-    #[inline]
-    fn jet_at(&self, t: f64) -> ClockJet {
-        match self {
-            None => ClockJet { tau: t, d1: 1.0, d2: 0.0 },
-            Some(c) => c.jet(t),
-        }
-    }
-
     #[inline]
     fn bounds_over(&self, ta: f64, tb: f64) -> ClockBounds {
         match self {

@@ -105,4 +105,3 @@ pub(crate) fn capsule_ellipse_core(r1: f64, r2: f64, r3: f64) -> Core {
         radius: segment.min(arcs).min(ellipse).max(0.0),
     }
 }
-

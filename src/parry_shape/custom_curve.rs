@@ -69,7 +69,16 @@ impl Shape for CustomCurve {
     }
 
     fn ccd_thickness(&self) -> Real {
-        aabb_ccd_thickness(&self.compute_local_aabb())
+        // The inradius about the centroid (module docs of `core`): the distance from the
+        // centroid to the curve, by projection (the box's half-width where that fails).
+        let c = curve_mass(self.curve(), 1.0).local_com;
+        let p = self.project_local_point(c, false);
+        let d = (p.point - c).length();
+        if p.is_inside && d.is_finite() && d > 0.0 {
+            d
+        } else {
+            aabb_ccd_thickness(&self.compute_local_aabb())
+        }
     }
 
     fn ccd_angular_thickness(&self) -> Real {

@@ -60,18 +60,18 @@
 //!   symmetric); a custom curve not at all (`None`).
 
 mod capsule_ellipse;
+mod core;
 mod custom_curve;
 mod ellipse;
 mod features;
-mod core;
 mod mass;
 mod projection;
 mod ray;
 mod rounded_polygon;
 
+pub(crate) use core::{capsule_ellipse_core, polygon_core, Core};
 pub use features::FLAT_FEATURE_MAX_ANGLE;
 pub(crate) use features::{face_id, vertex_id};
-pub(crate) use core::{capsule_ellipse_core, polygon_core, Core};
 
 use crate::curve::ConvexCurve;
 use crate::numerics::math::{Real, Vector};

@@ -120,7 +120,11 @@ impl OnPath {
                 let d1 = c.jet(r.time).d1;
                 TimeOfImpact {
                     time: c.path_time(r.time),
-                    distance_rate: if d1 > 0.0 { r.distance_rate / d1 } else { r.distance_rate },
+                    distance_rate: if d1 > 0.0 {
+                        r.distance_rate / d1
+                    } else {
+                        r.distance_rate
+                    },
                     ..r
                 }
             }

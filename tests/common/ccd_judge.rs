@@ -95,11 +95,7 @@ fn run_inner(case: &Case, method: Method) -> Outcome {
     let mut scene = build(case, method);
     let mut out = Outcome::default();
     let mut still = vec![0usize; scene.dynamic.len()];
-    let radii: Vec<f64> = scene
-        .dynamic
-        .iter()
-        .map(|h| body_radius(&scene, *h, case))
-        .collect();
+    let radii: Vec<f64> = scene.dynamic.iter().map(|h| body_radius(&scene, *h, case)).collect();
     for step in 0..scene.steps {
         drive(&mut scene, step);
         let before: Vec<Before> = scene
@@ -142,7 +138,10 @@ fn run_inner(case: &Case, method: Method) -> Outcome {
             let r = radii[i];
             let (speed, moved) = if std::env::var("STRICT").is_ok() {
                 let turn = (*rb.rotation() * before[i].rot.inverse()).angle().abs();
-                (rb.linvel().length() + rb.angvel().abs() * r, (rb.center_of_mass() - before[i].com).length() + turn * r)
+                (
+                    rb.linvel().length() + rb.angvel().abs() * r,
+                    (rb.center_of_mass() - before[i].com).length() + turn * r,
+                )
             } else {
                 (rb.linvel().length(), (rb.center_of_mass() - before[i].com).length())
             };
@@ -174,7 +173,8 @@ fn body_radius(scene: &Scene, h: RigidBodyHandle, case: &Case) -> f64 {
         .iter()
         .map(|c| {
             let co = &scene.world.colliders[*c];
-            co.shape().compute_local_bounding_sphere().radius + co.position_wrt_parent().map_or(0.0, |p| p.translation.length())
+            co.shape().compute_local_bounding_sphere().radius
+                + co.position_wrt_parent().map_or(0.0, |p| p.translation.length())
         })
         .fold(0.0, f64::max)
 }
@@ -222,7 +222,8 @@ fn crosses(a: Vector, b: Vector, p0: Vector, p1: Vector) -> bool {
     let e = b - a;
     let s0 = e.perp_dot(p0 - a);
     let s1 = e.perp_dot(p1 - a);
-    if !(s0 * s1 < 0.0) {
+    // Not strictly on both sides (NaN positions are counted apart, not as crossings).
+    if s0 * s1 >= 0.0 || (s0 * s1).is_nan() {
         return false;
     }
     let p = p0 + (p1 - p0) * (s0 / (s0 - s1));
@@ -272,7 +273,12 @@ fn through(
                 continue;
             };
             let describe = |what: &str| {
-                format!("body {i} {what} ({:?}) from {:?} to {:?}", co.shape().shape_type(), c0, c1)
+                format!(
+                    "body {i} {what} ({:?}) from {:?} to {:?}",
+                    co.shape().shape_type(),
+                    c0,
+                    c1
+                )
             };
             let (e0, e1) = (pose1.inverse_transform_point(c0), pose1.inverse_transform_point(c1));
             match t.body {
@@ -287,7 +293,9 @@ fn through(
                         return (Some(describe("through a dynamic body at its end pose")), passed);
                     }
                     if passed.is_none() {
-                        let com = co.position().inverse_transform_point(scene.world.bodies[b].center_of_mass());
+                        let com = co
+                            .position()
+                            .inverse_transform_point(scene.world.bodies[b].center_of_mass());
                         let sweep = Sweep::from_poses(&pose0, &pose1, com);
                         let local = |k: usize| {
                             let s = k as f64 / MOVING_SAMPLES as f64;
@@ -392,7 +400,18 @@ pub fn table(cases: &[Case], outcomes: &[[Outcome; 2]]) -> String {
     let _ = writeln!(
         s,
         "{:<18} {:<17} {:>5} {:>7} {:>6} {:>6} {:>4} {:>6} {:>9} {:>9} {:>8} {:>6}",
-        "family", "method", "cases", "through", "frozen", "passed", "NaN", "panics", "deepest m", "/ thick", "step us", "ratio"
+        "family",
+        "method",
+        "cases",
+        "through",
+        "frozen",
+        "passed",
+        "NaN",
+        "panics",
+        "deepest m",
+        "/ thick",
+        "step us",
+        "ratio"
     );
     let mut totals = [Tally::default(), Tally::default()];
     let rows = |name: &str, tallies: &[Tally; 2], s: &mut String| {

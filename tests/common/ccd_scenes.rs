@@ -324,9 +324,11 @@ pub struct Scene {
 
 /// A fixed collider with restitution `e` (friction 0.3).
 fn fixed(world: &mut World, co: ColliderBuilder, e: f64) -> ColliderHandle {
-    world
-        .colliders
-        .insert(co.restitution(e).friction(0.3).restitution_combine_rule(CoefficientCombineRule::Max))
+    world.colliders.insert(
+        co.restitution(e)
+            .friction(0.3)
+            .restitution_combine_rule(CoefficientCombineRule::Max),
+    )
 }
 
 /// Builds the case's scene for `method`.
@@ -379,7 +381,14 @@ pub fn build(case: &Case, method: Method) -> Scene {
                 ColliderBuilder::segment(Vector::new(-len, 0.0), Vector::new(len, 0.0)),
                 0.5,
             ));
-            dynamic.push(launch(&mut world, Vector::new(0.0, 2.0), Vector::new(0.1 * v, -v), 0.3, 0.5, true));
+            dynamic.push(launch(
+                &mut world,
+                Vector::new(0.0, 2.0),
+                Vector::new(0.1 * v, -v),
+                0.3,
+                0.5,
+                true,
+            ));
         }
         Family::ChainBox => {
             gravity = Vector::ZERO;
@@ -429,7 +438,14 @@ pub fn build(case: &Case, method: Method) -> Scene {
             let b = Vector::new(l * half.sin(), l * half.cos());
             fixed_list.push(fixed(&mut world, ColliderBuilder::segment(a, Vector::ZERO), 0.2));
             fixed_list.push(fixed(&mut world, ColliderBuilder::segment(Vector::ZERO, b), 0.2));
-            dynamic.push(launch(&mut world, Vector::new(0.4, 5.0), Vector::new(0.05 * v, -v), 0.7, 0.2, true));
+            dynamic.push(launch(
+                &mut world,
+                Vector::new(0.4, 5.0),
+                Vector::new(0.05 * v, -v),
+                0.7,
+                0.2,
+                true,
+            ));
         }
         Family::Wedge => {
             gravity = Vector::ZERO;
@@ -440,7 +456,14 @@ pub fn build(case: &Case, method: Method) -> Scene {
             let down = apex + Vector::new(-l * half.cos(), -l * half.sin());
             fixed_list.push(fixed(&mut world, ColliderBuilder::segment(up, apex), 0.3));
             fixed_list.push(fixed(&mut world, ColliderBuilder::segment(down, apex), 0.3));
-            dynamic.push(launch(&mut world, Vector::new(0.0, 0.1), Vector::new(v, 0.0), 0.0, 0.3, true));
+            dynamic.push(launch(
+                &mut world,
+                Vector::new(0.0, 0.1),
+                Vector::new(v, 0.0),
+                0.0,
+                0.3,
+                true,
+            ));
         }
         Family::SlideCorner => {
             fixed_list.push(fixed(
@@ -481,7 +504,9 @@ pub fn build(case: &Case, method: Method) -> Scene {
             }
         }
         Family::Flipper => {
-            let anchor = world.bodies.insert(RigidBodyBuilder::fixed().translation(Vector::new(-1.0, 0.0)));
+            let anchor = world
+                .bodies
+                .insert(RigidBodyBuilder::fixed().translation(Vector::new(-1.0, 0.0)));
             // The flipper's hinge end (−1, 0) in its frame sits on the anchor at angle −0.4.
             let angle: f64 = -0.4;
             let hinge = Vector::new(-angle.cos(), -angle.sin());
@@ -522,7 +547,11 @@ pub fn build(case: &Case, method: Method) -> Scene {
                 (Vector::new(-h - t, 0.0), Vector::new(t, h)),
                 (Vector::new(h + t, 0.0), Vector::new(t, h)),
             ] {
-                fixed_list.push(fixed(&mut world, ColliderBuilder::cuboid(he.x, he.y).translation(c), 1.0));
+                fixed_list.push(fixed(
+                    &mut world,
+                    ColliderBuilder::cuboid(he.x, he.y).translation(c),
+                    1.0,
+                ));
             }
             let dir = Vector::new(0.61f64.cos(), 0.61f64.sin());
             dynamic.push(launch(&mut world, Vector::new(0.3, -0.2), dir * v, 0.0, 1.0, true));
@@ -540,7 +569,14 @@ pub fn build(case: &Case, method: Method) -> Scene {
         Family::PlankDrop => {
             let len = 0.2 * v * DT * Family::PlankDrop.steps() as f64 + 20.0;
             fixed_list.push(fixed(&mut world, ColliderBuilder::cuboid(len, 0.025), 0.3));
-            dynamic.push(launch(&mut world, Vector::new(0.0, 3.0), Vector::new(0.1 * v, -v), 0.9, 0.3, true));
+            dynamic.push(launch(
+                &mut world,
+                Vector::new(0.0, 3.0),
+                Vector::new(0.1 * v, -v),
+                0.9,
+                0.3,
+                true,
+            ));
         }
     }
     Scene {

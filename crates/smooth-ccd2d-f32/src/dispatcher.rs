@@ -34,7 +34,7 @@ use parry2d::query::{
 };
 use parry2d::shape::Shape;
 use parry2d_f64::query::QueryDispatcher as _;
-use smooth_ccd2d::{DistanceOptions, StartContactPolicy, ToiOptions};
+use smooth_ccd2d::{CastPolicy, DistanceOptions, ToiOptions};
 
 /// The query dispatcher for parry2d / rapier2d in f32: exact smooth-shape queries computed in
 /// f64, parry2d for everything else.
@@ -44,11 +44,11 @@ use smooth_ccd2d::{DistanceOptions, StartContactPolicy, ToiOptions};
 /// those of [`smooth_ccd2d::SmoothDispatcher`], kept in [`SmoothDispatcher::core`]:
 ///
 /// ```
-/// use smooth_ccd2d_f32::{SmoothDispatcher, StartContactPolicy};
+/// use smooth_ccd2d_f32::{CastPolicy, SmoothDispatcher};
 /// let for_rapier = SmoothDispatcher::default();
-/// assert_eq!(for_rapier.core.start_contact, StartContactPolicy::RapierAllowance);
-/// let plain = SmoothDispatcher::default().with_start_contact(StartContactPolicy::Plain);
-/// assert_eq!(plain.core.start_contact, StartContactPolicy::Plain);
+/// assert_eq!(for_rapier.core.cast_policy, CastPolicy::Rapier);
+/// let plain = SmoothDispatcher::default().with_cast_policy(CastPolicy::Plain);
+/// assert_eq!(plain.core.cast_policy, CastPolicy::Plain);
 /// ```
 #[derive(Clone, Debug, Default)]
 pub struct SmoothDispatcher {
@@ -57,7 +57,7 @@ pub struct SmoothDispatcher {
 }
 
 impl SmoothDispatcher {
-    /// The dispatcher with default options and rapier's start-contact rule (as `default()`).
+    /// The dispatcher with default options and rapier's CCD rules (as `default()`).
     pub fn new() -> Self {
         Self::default()
     }
@@ -74,9 +74,10 @@ impl SmoothDispatcher {
         self
     }
 
-    /// The same dispatcher with this start-contact policy ([`StartContactPolicy`]).
-    pub fn with_start_contact(mut self, policy: StartContactPolicy) -> Self {
-        self.core = self.core.with_start_contact(policy);
+    /// The same dispatcher with this cast policy ([`CastPolicy`]: rapier's CCD rules, the
+    /// default, or the crate's time of impact as it is).
+    pub fn with_cast_policy(mut self, policy: CastPolicy) -> Self {
+        self.core = self.core.with_cast_policy(policy);
         self
     }
 

@@ -63,7 +63,7 @@ pub use cast::shape_time_of_impact;
 pub use dispatcher::SmoothDispatcher;
 pub use shapes::{CapsuleEllipse, CustomCurve, Ellipse, RoundedPolygon};
 pub use smooth_ccd2d::{
-    ConvexCurve, CurvePoint, DistanceOptions, QueryError, ShapeError, StartContactPolicy, TimeOfImpact, ToiCost,
+    CastPolicy, ConvexCurve, CurvePoint, DistanceOptions, MotionPath, QueryError, ShapeError, TimeOfImpact, ToiCost,
     ToiOptions, ToiStatus,
 };
 
