@@ -8,13 +8,19 @@ use super::composite::composite_cast_nonlinear;
 use super::input_guard;
 use super::parry_fallback::parry_cast_nonlinear;
 use super::parry_fallback::parry_nonlinear_without_stop;
-use super::rapier_rule::{in_contact, rapier_path, start_contact_answer, start_distance, CastPolicy};
+use super::rapier_rule::{in_contact, out_of_reach, rapier_path, start_contact, start_contact_answer, CastPolicy};
 use super::route::{curves_toi, pair_distance, route_cast, CurveOf, Route, RouteScratch};
+use super::support_shape::{exact_contact_of, support_shape, SupportScratch};
 use super::SmoothDispatcher;
 use crate::error::QueryError;
 use crate::numerics::math::{Pose, Real};
+use crate::numerics::motion::motion_is_finite;
+use crate::query::advance::{advance_time_of_impact, Advance};
+use crate::query::contact::Contact;
+use crate::query::contact::SupportShape;
 use crate::query::gap::{gap_distance, gap_time_of_impact, gap_time_to_level};
 use crate::query::halfspace::{halfspace_distance, time_of_impact_halfspace};
+use crate::query::path::OnPath;
 use crate::query::toi::{bounding_circles_part, TimeOfImpact, ToiOptions};
 use parry2d_f64::query::{NonlinearRigidMotion, ShapeCastHit, Unsupported};
 use parry2d_f64::shape::{HalfSpace, Shape};
@@ -132,7 +138,15 @@ impl SmoothDispatcher {
             opts = rapier_path(c, &opts);
         }
         // The start-contact rule of rapier's CCD applies to solid bodies.
-        let rule = rapier && !c.stop && is_window(c.t0, c.t1);
+        let rule = Rules {
+            rapier: rapier && is_window(c.t0, c.t1),
+            start_contact: rapier && !c.stop && is_window(c.t0, c.t1),
+        };
+        if rule.rapier {
+            if let Some(answer) = rapier_fast_path(c, &opts, rule) {
+                return answer;
+            }
+        }
         match route_cast(c.g1, c.g2, &mut RouteScratch::default()) {
             Route::Curves { c1, c2, swapped } => self.cast_curves(c, &c1, &c2, swapped, &opts, rule),
             Route::Gap { c1, c2 } => self.cast_gap(c, &c1, &c2, &opts, rule),
@@ -145,7 +159,7 @@ impl SmoothDispatcher {
                 Ok(false) => Ok(None),
                 Err(e) => Err(e),
             },
-            Route::Parry { ours: true } if rule => {
+            Route::Parry { ours: true } if rule.start_contact => {
                 input_guard::finite(parry_nonlinear_without_stop(c.m1, c.g1, c.m2, c.g2, c.t0, c.t1))
             }
             Route::Parry { .. } => parry_cast_nonlinear(c.m1, c.g1, c.m2, c.g2, c.t0, c.t1, c.stop),
@@ -161,7 +175,7 @@ impl SmoothDispatcher {
         c2: &CurveOf,
         swapped: bool,
         opts: &ToiOptions,
-        rule: bool,
+        rule: Rules,
     ) -> Result<Option<ShapeCastHit>, Unsupported> {
         let (a, b) = if swapped { (c2, c1) } else { (c1, c2) };
         // The specification's inexpensive test first: circles that never meet, no impact
@@ -169,15 +183,21 @@ impl SmoothDispatcher {
         if bounding_circles_part(a.get(), c.m1, b.get(), c.m2, c.t0, c.t1, opts.target_distance) {
             return Ok(None);
         }
-        if rule {
-            let d0 = start_distance(c).or_else(|| {
+        if rule.rapier {
+            let k0 = start_contact(c);
+            let d0 = k0.map(|k| k.dist).or_else(|| {
                 pair_distance(c1, c2, swapped, &pos12_at(c.m1, c.m2, c.t0), &self.distance_options)
                     .ok()
                     .map(|d| d.distance)
             });
-            if let (Some(d0), Some(sa), Some(sb)) = (d0, a.any_side(), b.any_side()) {
-                if in_contact(c, d0) {
-                    return start_contact_answer(c, d0, opts, |m1, m2, level| {
+            if let Some(d0) = d0 {
+                if out_of_reach(c, d0, opts.target_distance) {
+                    return Ok(None);
+                }
+                if let (true, Some(sa), Some(sb)) =
+                    (rule.start_contact && in_contact(c, d0), a.any_side(), b.any_side())
+                {
+                    return start_contact_answer(c, d0, k0, opts, |m1, m2, level| {
                         gap_time_to_level(sa, m1, sb, m2, c.t0, c.t1, level, &plain(opts))
                     });
                 }
@@ -193,7 +213,7 @@ impl SmoothDispatcher {
         c1: &CurveOf,
         c2: &CurveOf,
         opts: &ToiOptions,
-        rule: bool,
+        rule: Rules,
     ) -> Result<Option<ShapeCastHit>, Unsupported> {
         let (Some(p1), Some(p2)) = (c1.gap_side(), c2.gap_side()) else {
             return Err(Unsupported);
@@ -201,12 +221,20 @@ impl SmoothDispatcher {
         if bounding_circles_part(c1.get(), c.m1, c2.get(), c.m2, c.t0, c.t1, opts.target_distance) {
             return Ok(None);
         }
-        if rule {
-            let d0 = start_distance(c).or_else(|| gap_distance(p1, p2, &pos12_at(c.m1, c.m2, c.t0)).map(|d| d.0));
-            if let Some(d0) = d0.filter(|d0| in_contact(c, *d0)) {
-                return start_contact_answer(c, d0, opts, |m1, m2, level| {
-                    gap_time_to_level(p1, m1, p2, m2, c.t0, c.t1, level, &plain(opts))
-                });
+        if rule.rapier {
+            let k0 = start_contact(c);
+            let d0 = k0
+                .map(|k| k.dist)
+                .or_else(|| gap_distance(p1, p2, &pos12_at(c.m1, c.m2, c.t0)).map(|d| d.0));
+            if let Some(d0) = d0 {
+                if out_of_reach(c, d0, opts.target_distance) {
+                    return Ok(None);
+                }
+                if rule.start_contact && in_contact(c, d0) {
+                    return start_contact_answer(c, d0, k0, opts, |m1, m2, level| {
+                        gap_time_to_level(p1, m1, p2, m2, c.t0, c.t1, level, &plain(opts))
+                    });
+                }
             }
         }
         toi_to_parry(gap_time_of_impact(p1, c.m1, p2, c.m2, c.t0, c.t1, opts).map(Some))
@@ -221,7 +249,7 @@ impl SmoothDispatcher {
         hs: &HalfSpace,
         curve_first: bool,
         opts: &ToiOptions,
-        rule: bool,
+        rule: Rules,
     ) -> Result<Option<ShapeCastHit>, Unsupported> {
         // The half-space cast in the caller's order, the plane moved by `shift` along its normal.
         let cast = |m1: &NonlinearRigidMotion, m2: &NonlinearRigidMotion, shift: Real, o: &ToiOptions| {
@@ -237,16 +265,120 @@ impl SmoothDispatcher {
                 r.map(TimeOfImpact::swapped)
             }
         };
-        if rule {
+        if rule.start_contact {
             let d0 = halfspace_distance(curve.get(), hs, &pos12_at(c.m1, c.m2, c.t0), curve_first)
                 .ok()
                 .map(|d| d.distance);
             if let Some(d0) = d0.filter(|d0| in_contact(c, *d0)) {
-                return start_contact_answer(c, d0, opts, |m1, m2, level| cast(m1, m2, level, &plain(opts)));
+                return start_contact_answer(c, d0, None, opts, |m1, m2, level| cast(m1, m2, level, &plain(opts)));
             }
         }
         toi_to_parry(cast(c.m1, c.m2, 0.0, opts).map(Some))
     }
+}
+
+/// rapier's casts of the shapes the contact query reads, one of them this crate's, without
+/// routing them to the trackers: the exact contact at the start; the pair out of reach; a
+/// contact at the start by rapier's rule; apart, the separating-axis advancement
+/// (`query::advance`). `None` where the trackers answer (another pair, non-finite input, an
+/// advancement declined, a contact at the start with `stop_at_penetration`).
+fn rapier_fast_path(
+    c: &NonlinearCast,
+    opts: &ToiOptions,
+    rule: Rules,
+) -> Option<Result<Option<ShapeCastHit>, Unsupported>> {
+    let ours = |g: &dyn Shape| g.shape_type() == parry2d_f64::shape::ShapeType::Custom;
+    if !(ours(c.g1) || ours(c.g2)) || !(motion_is_finite(c.m1) && motion_is_finite(c.m2)) {
+        return None;
+    }
+    let (mut st1, mut st2) = (SupportScratch::default(), SupportScratch::default());
+    let s1 = support_shape(c.g1, &mut st1)?;
+    let s2 = support_shape(c.g2, &mut st2)?;
+    let k0 = exact_contact_of(s1, s2, &pos12_at(c.m1, c.m2, c.t0), None)?;
+    let d0 = k0.dist;
+    if out_of_reach(c, d0, opts.target_distance) {
+        return Some(Ok(None));
+    }
+    if in_contact(c, d0) {
+        return rule.start_contact.then(|| {
+            start_contact_answer(c, d0, Some(k0), opts, |m1, m2, level| {
+                level_by_route(c, m1, m2, level, opts)
+            })
+        });
+    }
+    advanced(c, s1, s2, opts, Some(k0))
+}
+
+/// The first time the signed distance of the cast's shapes moving by `m1`, `m2` comes down to
+/// `level`, by the route's own search (the gap tracker, the half-space cast on a shifted plane):
+/// the start-contact rule's fallback for the pairs the contact query does not read.
+fn level_by_route(
+    c: &NonlinearCast,
+    m1: &NonlinearRigidMotion,
+    m2: &NonlinearRigidMotion,
+    level: Real,
+    opts: &ToiOptions,
+) -> Result<TimeOfImpact, QueryError> {
+    let o = plain(opts);
+    match route_cast(c.g1, c.g2, &mut RouteScratch::default()) {
+        Route::Curves { c1, c2, swapped } => {
+            let (a, b) = if swapped { (c2, c1) } else { (c1, c2) };
+            match (a.any_side(), b.any_side()) {
+                (Some(sa), Some(sb)) => gap_time_to_level(sa, m1, sb, m2, c.t0, c.t1, level, &o),
+                _ => Err(QueryError::UnsupportedShape),
+            }
+        }
+        Route::Gap { c1, c2 } => match (c1.gap_side(), c2.gap_side()) {
+            (Some(p1), Some(p2)) => gap_time_to_level(p1, m1, p2, m2, c.t0, c.t1, level, &o),
+            _ => Err(QueryError::UnsupportedShape),
+        },
+        Route::HalfSpace { curve, hs, curve_first } => {
+            let (mc, mh) = if curve_first { (m1, m2) } else { (m2, m1) };
+            let moved = NonlinearRigidMotion {
+                start: mh.start * Pose::from_translation(hs.normal * level),
+                ..*mh
+            };
+            let r = time_of_impact_halfspace(curve.get(), mc, hs, &moved, c.t0, c.t1, &o);
+            if curve_first {
+                r
+            } else {
+                r.map(TimeOfImpact::swapped)
+            }
+        }
+        Route::Composite | Route::Parry { .. } => Err(QueryError::UnsupportedShape),
+    }
+}
+
+/// The separating-axis advancement (`query::advance`) of a cast whose shapes (`s1`, `s2`, as the
+/// contact query reads them) are apart at its start, `first` their contact there; `None` where
+/// it declines (the trackers answer then).
+fn advanced(
+    c: &NonlinearCast,
+    s1: SupportShape,
+    s2: SupportShape,
+    opts: &ToiOptions,
+    first: Option<Contact>,
+) -> Option<Result<Option<ShapeCastHit>, Unsupported>> {
+    let on = OnPath::new(c.m1, c.m2, c.t0, c.t1, opts.path).ok()?;
+    // The size s of the tolerances: the larger bounding radius about the local origins.
+    let radius = |g: &dyn Shape| {
+        let b = g.compute_local_bounding_sphere();
+        b.radius + b.center.length()
+    };
+    let tol = opts.distance_tolerance * radius(c.g1).max(radius(c.g2));
+    match advance_time_of_impact(s1, s2, c.g1, c.g2, &on, c.t0, c.t1, opts.target_distance, tol, first) {
+        Advance::Answer(t) => Some(toi_to_parry(Ok(Some(t)))),
+        Advance::Declined => None,
+    }
+}
+
+/// Which of rapier's rules a cast follows (`rapier_rule`): its start-distance tests (the
+/// policy is rapier's and the window is not empty) and the start-contact rule (also solid
+/// bodies, `stop_at_penetration = false`).
+#[derive(Copy, Clone, Debug)]
+struct Rules {
+    rapier: bool,
+    start_contact: bool,
 }
 
 /// `opts` on parry's own motions (the level searches of the start-contact rule run on motions

@@ -58,6 +58,7 @@ mod queries;
 pub(crate) mod rapier_rule;
 pub(crate) mod route;
 pub(crate) mod support_shape;
+mod translation_level;
 
 pub use cast::shape_time_of_impact;
 pub use rapier_rule::CastPolicy;

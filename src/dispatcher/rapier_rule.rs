@@ -49,8 +49,10 @@ use super::cast::{toi_to_parry, NonlinearCast};
 use super::core_disc::core_of;
 use super::parry_fallback::pair_size;
 use super::support_shape::{exact_contact, support_shape, SupportScratch};
+use super::translation_level::{translation_time_to_level, LevelTime, Translating};
 use crate::error::QueryError;
 use crate::numerics::math::{Pose, Real, Vector};
+use crate::query::contact::Contact;
 use crate::query::path::MotionPath;
 use crate::query::toi::{TimeOfImpact, ToiOptions, ToiStatus};
 use parry2d_f64::query::{NonlinearRigidMotion, ShapeCastHit, Unsupported};
@@ -176,11 +178,11 @@ pub(crate) fn rapier_path(c: &NonlinearCast, opts: &ToiOptions) -> ToiOptions {
     ToiOptions { path, ..*opts }
 }
 
-/// The signed distance of the cast's shapes at its start (the exact contact query's), or `None`
-/// when that query does not read the pair.
-pub(crate) fn start_distance(c: &NonlinearCast) -> Option<Real> {
+/// The exact contact of the cast's shapes at its start, or `None` when the contact query does
+/// not read the pair.
+pub(crate) fn start_contact(c: &NonlinearCast) -> Option<Contact> {
     let pos12 = c.m1.position_at_time(c.t0).inv_mul(&c.m2.position_at_time(c.t0));
-    exact_contact(&pos12, c.g1, c.g2, None).map(|k| k.dist)
+    exact_contact(&pos12, c.g1, c.g2, None)
 }
 
 /// Whether shapes at signed distance `d0` at the start of `c` are in contact there.
@@ -188,28 +190,92 @@ pub(crate) fn in_contact(c: &NonlinearCast, d0: Real) -> bool {
     d0 <= CastPolicy::START_CONTACT_GAP * pair_size(c.g1, c.g2)
 }
 
+/// Whether shapes at signed distance `d0` at the start of `c` cannot come within `target` of
+/// each other in its window: no point of a body moves by more than its translation plus the
+/// chord of its turn (at most its radius about its rotation centre times the turn, and twice
+/// the radius), on the constant-spin path as on the nlerp path, and the signed distance of two
+/// apart shapes changes by no more than their points move.
+pub(crate) fn out_of_reach(c: &NonlinearCast, d0: Real, target: Real) -> bool {
+    let window = c.t1 - c.t0;
+    let reach = |m: &NonlinearRigidMotion, g: &dyn Shape| {
+        let sphere = g.compute_local_bounding_sphere();
+        let radius = sphere.radius + (sphere.center - m.local_center).length();
+        m.linvel.length() * window + radius * (m.angvel.abs() * window).min(2.0)
+    };
+    let both = reach(c.m1, c.g1) + reach(c.m2, c.g2);
+    // A relative margin for the rounding of the distance and of the bound.
+    let margin = 1e-9 * (pair_size(c.g1, c.g2) + both);
+    both.is_finite() && d0 - target > both + margin
+}
+
+/// A motion without its spin.
+fn spinless(m: &NonlinearRigidMotion) -> NonlinearRigidMotion {
+    NonlinearRigidMotion { angvel: 0.0, ..*m }
+}
+
+/// The first time a level search of the translating pair `p` reports, with `general` for the
+/// pairs the exact contact query does not read (the cast's own trackers).
+fn first_time(
+    p: &Translating,
+    c: &NonlinearCast,
+    level: Real,
+    tol: Real,
+    first: Option<Contact>,
+    general: impl FnOnce() -> Result<TimeOfImpact, QueryError>,
+) -> Result<Option<Real>, QueryError> {
+    match translation_time_to_level(p, c.t0, c.t1, level, tol, first) {
+        LevelTime::Reached(t) | LevelTime::Capped(t) => Ok(Some(t)),
+        LevelTime::Never => Ok(None),
+        LevelTime::Unread => general().map(|t| (t.status != ToiStatus::NoHit).then_some(t.time)),
+    }
+}
+
 /// Rule 3 of the module docs for a cast whose shapes are at signed distance `d0` ≤ the contact
-/// gap at its start: the earlier of the core's contact and the translation's deepening below
-/// min(−A, d₀ − A), at least [`CastPolicy::START_NUDGE`] of the window after the start. `level`
-/// answers the first time the signed distance of the pair moving by the two given motions comes
-/// down to a level (the gap tracker, or the half-space cast on a shifted plane).
+/// gap at its start (`k0`, their exact contact there when the contact query reads them): the
+/// earlier of the core's contact and the translation's deepening below min(−A, d₀ − A), at
+/// least [`CastPolicy::START_NUDGE`] of the window after the start. Both are first crossings of
+/// a level by the signed distance of a translating pair, which is convex in time: Newton's
+/// iteration from the left finds them exactly (`translation_level`). `level` answers for the
+/// pairs the contact query does not read: the first time the signed distance of the pair
+/// moving by the two given motions comes down to a level (the gap tracker, or the half-space
+/// cast on a shifted plane).
 pub(crate) fn start_contact_answer(
     c: &NonlinearCast,
     d0: Real,
+    k0: Option<Contact>,
     opts: &ToiOptions,
     level: impl Fn(&NonlinearRigidMotion, &NonlinearRigidMotion, Real) -> Result<TimeOfImpact, QueryError>,
 ) -> Result<Option<ShapeCastHit>, Unsupported> {
     let f = fast(c);
     let r = inradius_about(f.g, f.m.local_center);
+    let size = pair_size(c.g1, c.g2);
     let window = c.t1 - c.t0;
     let nudge = c.t0 + CastPolicy::START_NUDGE * window;
-    let answers = |r: Result<TimeOfImpact, QueryError>| match r {
-        Ok(t) if t.status == ToiStatus::NoHit => Ok(None),
-        Ok(t) => Ok(Some(t)),
-        Err(e) => Err(e),
+    let tol = opts.distance_tolerance * size;
+    // No point of a translating body moves further than this in the window.
+    let travel = (c.m2.linvel - c.m1.linvel).length() * window;
+    // The translation: the motions without their spins, down to min(−A, d₀ − A).
+    let allowance = CastPolicy::ALLOWANCE * r.max(CastPolicy::START_CONTACT_GAP * size);
+    let target = (-allowance).min(d0 - allowance);
+    let (m1, m2) = (spinless(c.m1), spinless(c.m2));
+    let t_trans = if travel < d0 - target {
+        Ok(None)
+    } else {
+        let p = Translating {
+            g1: c.g1,
+            m1: &m1,
+            g2: c.g2,
+            m2: &m2,
+        };
+        first_time(&p, c, target, tol, k0, || level(&m1, &m2, target))
     };
     // The core: a disc about the rotation centre, moving with it (its spin does not move it).
-    let t_core = if r > 0.0 {
+    // Its centre is at least r + d₀ from the target (a point of the target is at most the
+    // penetration depth inside the body), so it cannot reach the target before the pair's
+    // relative travel covers (1 − CORE)·r + d₀.
+    let t_core = if r <= 0.0 || (f.other_m.angvel == 0.0 && travel < (1.0 - CastPolicy::CORE) * r + d0) {
+        Ok(None)
+    } else {
         let core = Ball::new(CastPolicy::CORE * r);
         let centre = NonlinearRigidMotion::new(
             Pose::from_translation(f.m.start * f.m.local_center),
@@ -222,32 +288,25 @@ pub(crate) fn start_contact_answer(
             path: MotionPath::ConstantSpin,
             ..*opts
         };
-        answers(super::cast::shape_time_of_impact(
-            &core, &centre, f.other_g, f.other_m, c.t0, c.t1, &plain,
-        ))
-    } else {
-        Ok(None)
-    };
-    let t_core = match t_core {
-        Ok(t) => t,
-        Err(e) => return toi_to_parry(Err(e)),
-    };
-    // The translation: the motions without their spins, down to min(−A, d₀ − A).
-    let allowance = CastPolicy::ALLOWANCE * r.max(CastPolicy::START_CONTACT_GAP * pair_size(c.g1, c.g2));
-    let target = (-allowance).min(d0 - allowance);
-    let (m1, m2) = (
-        NonlinearRigidMotion { angvel: 0.0, ..*c.m1 },
-        NonlinearRigidMotion { angvel: 0.0, ..*c.m2 },
-    );
-    let t_trans = match answers(level(&m1, &m2, target)) {
-        Ok(t) => t,
-        Err(e) => return toi_to_parry(Err(e)),
+        let general = || super::cast::shape_time_of_impact(&core, &centre, f.other_g, f.other_m, c.t0, c.t1, &plain);
+        if f.other_m.angvel == 0.0 {
+            let p = Translating {
+                g1: &core,
+                m1: &centre,
+                g2: f.other_g,
+                m2: f.other_m,
+            };
+            first_time(&p, c, 0.0, tol, None, general)
+        } else {
+            general().map(|t| (t.status != ToiStatus::NoHit).then_some(t.time))
+        }
     };
     let earliest = match (t_trans, t_core) {
-        (Some(a), Some(b)) => Some(a.time.min(b.time)),
-        (Some(a), None) => Some(a.time),
-        (None, Some(b)) => Some(b.time),
-        (None, None) => None,
+        (Err(e), _) | (_, Err(e)) => return toi_to_parry(Err(e)),
+        (Ok(a), Ok(b)) => match (a, b) {
+            (Some(a), Some(b)) => Some(a.min(b)),
+            (a, b) => a.or(b),
+        },
     };
     toi_to_parry(Ok(earliest.map(|t| hit_at(c, t.max(nudge), d0))))
 }

@@ -3,6 +3,7 @@
 //! strictly convex side, `gap` without one, what their step loops share in `stepping`), and both
 //! against a half-space, on the path the bodies take over the window (`path`).
 
+pub(crate) mod advance;
 pub(crate) mod contact;
 pub(crate) mod gap;
 pub(crate) mod halfspace;

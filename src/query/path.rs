@@ -59,6 +59,20 @@ pub(crate) struct OnPath {
     pub clock: Option<Clock>,
 }
 
+/// The motion `m` with angular velocity `omega` instead of its own, its start rotated about its
+/// rotation centre so that it has the same pose at `t0` (parry's motions turn by ω·t from the
+/// start pose, t from 0, not from the window's start).
+fn respun(m: &NonlinearRigidMotion, omega: f64, t0: f64) -> NonlinearRigidMotion {
+    use parry2d_f64::math::Pose;
+    let centre = Pose::from_translation(m.start * m.local_center);
+    let turn = Pose::new(parry2d_f64::math::Vector::ZERO, (m.angvel - omega) * t0);
+    NonlinearRigidMotion {
+        start: centre * turn * centre.inverse() * m.start,
+        angvel: omega,
+        ..*m
+    }
+}
+
 impl OnPath {
     /// The motions `m1`, `m2` over [`t0`, `t1`] on `path`. For the nlerp path the turning body's
     /// angular velocity becomes the nlerp's turn Δ (the turn over the window wrapped into
@@ -99,9 +113,9 @@ impl OnPath {
         let omega = delta / span;
         let (mut a, mut b) = (*m1, *m2);
         if w1 != 0.0 {
-            a.angvel = omega;
+            a = respun(m1, omega, t0);
         } else {
-            b.angvel = omega;
+            b = respun(m2, omega, t0);
         }
         Ok(OnPath {
             m1: a,

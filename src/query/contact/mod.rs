@@ -110,10 +110,6 @@ pub(crate) struct Contact {
     /// The manifold's points; the first `len` are set, the first is the deepest.
     pub points: [ContactPoint; 2],
     pub len: usize,
-    /// The body (0 or 1) whose face holds the minimum — the reference face of the contact, the
-    /// other body being the incident one — or `None` when the minimum is not at a face (corner
-    /// against corner or curve, curve against curve).
-    pub reference: Option<usize>,
 }
 
 /// The exact contact of `shape1` (at the origin) and `shape2` (at `pos12` in body 1's frame);
@@ -144,13 +140,8 @@ pub(crate) fn contact(
         normal: m.normal,
         points: [one; 2],
         len: 1,
-        reference: None,
     };
     if let At::Breakpoint(i) = m.at {
-        let e = &walk.entries[i];
-        if walk.sides[e.side()].face(e.index()).is_some() {
-            c.reference = Some(e.side());
-        }
         if let Some(two) = facing_faces(&walk, i, &m, flat_cos) {
             c.points = two;
             c.len = 2;

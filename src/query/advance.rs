@@ -1,0 +1,563 @@
+//! Separating-axis advancement: the time of impact of a turning body against one that does not
+//! turn, by lower bounds along separating axes — the fast path of the dispatcher's casts for
+//! rapier (a fast body against a target at rest), exact like the trackers, with them to fall
+//! back on.
+//!
+//! # The method
+//!
+//! Let A be the body that does not turn (it may translate) and B the other, both convex, seen in
+//! A's frame: B's rotation centre at x(u) and its rotation θ(u) at the clock time u (the path's
+//! clock, `numerics::clock`: x(u) = x₀ + d·τ(u), θ(u) uniform). For any unit direction n the
+//! separation along n,
+//!
+//!   S_n(u) = min over q ∈ B(u) of n·q − h_A(n)     (h_A the support function of A),
+//!
+//! is at most the signed distance D(u) (the separating-axis theorem: D is the largest of them),
+//! and equals it for the contact normal n of the pair. So from a time u_k with the exact
+//! contact (D, n), the first time S_n comes down to the target distance δ is no later than the
+//! first time D does: the pair is certainly apart before it. There the exact contact gives a new
+//! normal, and so on; S_n is tangent to D at u_k (the same value and, the normal being the
+//! maximiser, the same derivative), so the times converge to the time of impact like Newton's
+//! iteration, in two to four contacts on rapier's scenes. When S_n stays above δ over the rest
+//! of the window, so does D: no impact.
+//!
+//! S_n is explicit. With w = R(θ)ᵀn, n in B's frame, c B's rotation centre in its frame:
+//!
+//! * B a polygon with vertices vᵢ dilated by r: S_n = min over i of fᵢ,
+//!   fᵢ(u) = n·x(u) + w(u)·(vᵢ − c) − r − h_A(n);
+//! * B an ellipse with semi-axes a, b (a disc when a = b): S_n = n·x(u) − k(w) − w·c − h_A(n),
+//!   k(w) = √(a²w_x² + b²w_y²).
+//!
+//! Each piece is smooth with |f″| ≤ |n·d|·max|τ″| + θ′²·ρ, where ρ is |vᵢ − c| for a vertex and
+//! max(a, b)²/min(a, b) + |c| for an ellipse (the largest radius of curvature bounds the second
+//! derivative of k along a turning direction). From a time where every piece is above δ, the
+//! step to the first root of f + f′s − Ks²/2 is safe for each piece (the parabola lies below
+//! it), and the smallest over the pieces is safe for S_n; near a crossing it is Newton's step to
+//! second order, so the first crossing of S_n is found in a few steps.
+//!
+//! What the method does not take goes to the trackers: two turning bodies, a turning body that
+//! is not a polygon, a disc or an ellipse, pairs the exact contact query does not read, and
+//! the rare query that runs out of [`ADVANCE_MAX_CONTACTS`] contacts or [`ADVANCE_MAX_STEPS`]
+//! steps (a graze that keeps S_n near δ).
+
+use crate::numerics::clock::{Clock, ClockExt};
+use crate::numerics::math::{perp, Pose, Real, Vector};
+use crate::query::contact::{contact, Contact, SupportShape};
+use crate::query::path::OnPath;
+use crate::query::toi::{TimeOfImpact, ToiCost, ToiStatus};
+use core::f64::consts::FRAC_PI_2;
+use parry2d_f64::query::NonlinearRigidMotion;
+use parry2d_f64::shape::Shape;
+
+/// Exact contacts one advancement computes at most before it hands the query to the trackers.
+pub(crate) const ADVANCE_MAX_CONTACTS: usize = 24;
+
+/// Steps along one axis at most before the advancement hands the query to the trackers.
+pub(crate) const ADVANCE_MAX_STEPS: usize = 256;
+
+/// Within this angle of the boundary between a `CapsuleEllipse`'s two regions of normals, the
+/// pieces of both are taken (module docs of [`pieces`]).
+const CAPSULE_BOUNDARY_ANGLE: Real = 1e-6;
+
+/// The fraction of the distance tolerance to which a crossing of a separation is found.
+const CROSSING_FRACTION: Real = 1e-3;
+
+/// The contact query's cosine between facing faces that asks for no second point.
+const NO_SECOND_POINT: Real = 2.0;
+
+/// The turning body's support seen along the axis: what [`pieces`] needs of it.
+#[derive(Copy, Clone)]
+enum Turning<'a> {
+    /// Vertices, radius, and the rotation centre c.
+    Polygon {
+        vertices: &'a [Vector],
+        radius: Real,
+        centre: Vector,
+    },
+    /// Semi-axes and the rotation centre.
+    Ellipse { a: Real, b: Real, centre: Vector },
+    /// A `CapsuleEllipse` (r1, r2, r3) and the rotation centre.
+    CapsuleEllipse { r: (Real, Real, Real), centre: Vector },
+}
+
+/// The kinematics of B in A's frame (module docs) over the clock.
+struct Kinematics {
+    /// B's rotation centre at clock time 0 (before the clock's translation), and d.
+    x0: Vector,
+    d: Vector,
+    /// B's rotation in A's frame at clock time 0, and its rate θ′.
+    theta0: Real,
+    omega: Real,
+    clock: Option<Clock>,
+    /// B's rotation centre in its own frame.
+    centre: Vector,
+}
+
+impl Kinematics {
+    /// x(u) and τ′(u) (x′ = d·τ′; the bound of |τ″| is taken apart).
+    fn x(&self, u: Real) -> (Vector, Real) {
+        match &self.clock {
+            None => (self.x0 + self.d * u, 1.0),
+            Some(c) => {
+                let j = c.jet(u);
+                (self.x0 + self.d * j.tau, j.d1)
+            }
+        }
+    }
+
+    /// B's pose in A's frame at clock time `u`: T(x) R(θ) T(−c).
+    fn pose(&self, u: Real) -> Pose {
+        let (x, _) = self.x(u);
+        let r = Pose::new(Vector::ZERO, self.theta0 + self.omega * u);
+        Pose::from_translation(x) * r * Pose::from_translation(-self.centre)
+    }
+}
+
+/// What an advancement found: an answer, or nothing the caller should take (the trackers then).
+pub(crate) enum Advance {
+    /// The time of impact (status `Hit` or `NoHit`), in the caller's order, on the path's time.
+    Answer(TimeOfImpact),
+    /// The method does not take this query, or ran out of contacts or steps.
+    Declined,
+}
+
+/// The time of impact of the shapes `s1` and `s2` moving on the path `on` (the motions and clock
+/// a tracker would run) over `[t0, t1]`, at target distance `target`, accepting D − δ ≤ `tol`;
+/// the shapes must be apart at `t0` by more than `tol` (the caller's start-contact rules come
+/// first). One body at most may turn. Module docs.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn advance_time_of_impact(
+    s1: SupportShape,
+    s2: SupportShape,
+    g1: &dyn Shape,
+    g2: &dyn Shape,
+    on: &OnPath,
+    t0: Real,
+    t1: Real,
+    target: Real,
+    tol: Real,
+    first: Option<Contact>,
+) -> Advance {
+    let (w1, w2) = (on.m1.angvel, on.m2.angvel);
+    if w1 != 0.0 && w2 != 0.0 {
+        return Advance::Declined;
+    }
+    // A: the body that does not turn (shape 2 when neither does).
+    let b_first = w1 != 0.0;
+    let (sa, sb, ma, mb) = if b_first {
+        (s2, s1, &on.m2, &on.m1)
+    } else {
+        (s1, s2, &on.m1, &on.m2)
+    };
+    let Some(turning) = turning_of(sb, mb.local_center) else {
+        return Advance::Declined;
+    };
+    let k = kinematics(ma, mb, on.clock);
+    // The caller's contact at the start (shape 1 first), in A-then-B order.
+    let first = first.map(|c| if b_first { swapped(c, &k.pose(t0)) } else { c });
+    let g = if b_first {
+        Parry { a: g2, b: g1 }
+    } else {
+        Parry { a: g1, b: g2 }
+    };
+    let Some(r) = advance(sa, sb, g, turning, &k, t0, t1, target, tol, first) else {
+        return Advance::Declined;
+    };
+    Advance::Answer(finish(r, on, &k, b_first))
+}
+
+/// What [`advance`] found, in A-then-B order, on the clock.
+struct Found {
+    status: ToiStatus,
+    time: Real,
+    /// The distance, normal and witnesses at `time` (A's frame), for a hit.
+    at: Option<Witnesses>,
+    rate: Real,
+    contacts: usize,
+}
+
+/// A distance with its normal and witness points, all in A's frame.
+#[derive(Copy, Clone)]
+struct Witnesses {
+    dist: Real,
+    normal: Vector,
+    point_a: Vector,
+    point_b: Vector,
+}
+
+impl Witnesses {
+    fn of(c: &Contact) -> Self {
+        Witnesses {
+            dist: c.dist,
+            normal: c.normal,
+            point_a: c.points[0].point1,
+            point_b: c.points[0].point2,
+        }
+    }
+}
+
+/// The two shapes of a query as parry has them (A first), for the certificate of a crossing.
+#[derive(Copy, Clone)]
+pub(crate) struct Parry<'a> {
+    pub a: &'a dyn Shape,
+    pub b: &'a dyn Shape,
+}
+
+/// At a crossing of S_n (B at `pose` in A's frame, `n` the axis), an upper bound of the signed
+/// distance without a contact query: the distance from B's lowest point along n to A (or from
+/// A's highest point along n to B) is at least D. When it is at most `enough` (the target and
+/// the tolerance) the crossing is the time of impact (D is between S_n and it), with these
+/// witnesses; otherwise the contact query decides.
+fn certificate(g: Parry, pose: &Pose, n: Vector, enough: Real) -> Option<Witnesses> {
+    let (sa, sb) = (g.a.as_support_map()?, g.b.as_support_map()?);
+    let ok = |w: &Witnesses| w.dist.is_finite() && w.point_a.is_finite() && w.point_b.is_finite();
+    // B's lowest point along n, projected on A (a point of A on the axis when A's face holds it).
+    let point_b = *pose * sb.local_support_point(pose.rotation.inverse() * -n);
+    let proj = g.a.project_local_point(point_b, true);
+    let by_b = Witnesses {
+        dist: if proj.is_inside {
+            0.0
+        } else {
+            (point_b - proj.point).length()
+        },
+        normal: n,
+        point_a: proj.point,
+        point_b,
+    };
+    if by_b.dist <= enough && ok(&by_b) {
+        return Some(by_b);
+    }
+    // A's highest point along n, projected on B (B's face holds it).
+    let point_a = sa.local_support_point(n);
+    let local = pose.inverse_transform_point(point_a);
+    let proj = g.b.project_local_point(local, true);
+    let by_a = Witnesses {
+        dist: if proj.is_inside {
+            0.0
+        } else {
+            (local - proj.point).length()
+        },
+        normal: n,
+        point_a,
+        point_b: *pose * proj.point,
+    };
+    (by_a.dist <= enough && ok(&by_a)).then_some(by_a)
+}
+
+/// B's kinematics in A's frame from the two motions (A's spin is 0).
+fn kinematics(ma: &NonlinearRigidMotion, mb: &NonlinearRigidMotion, clock: Option<Clock>) -> Kinematics {
+    // A's pose at t is T(v_A t)·P_A; B's is T(c_B + v_B t) R(ω t) R_B0 T(−c) (parry's motions).
+    let inv = ma.start.rotation.inverse();
+    let c_b = mb.start * mb.local_center;
+    Kinematics {
+        x0: inv * (c_b - ma.start.translation),
+        d: inv * (mb.linvel - ma.linvel),
+        theta0: (inv * mb.start.rotation).angle(),
+        omega: mb.angvel,
+        clock,
+        centre: mb.local_center,
+    }
+}
+
+/// The turning body as [`pieces`] reads it, about its rotation centre `c`.
+fn turning_of(s: SupportShape, c: Vector) -> Option<Turning> {
+    match s {
+        SupportShape::Polygon { vertices, radius, .. } => Some(Turning::Polygon {
+            vertices,
+            radius,
+            centre: c,
+        }),
+        SupportShape::Disc(r) => Some(Turning::Ellipse { a: r, b: r, centre: c }),
+        SupportShape::Ellipse(a, b) => Some(Turning::Ellipse { a, b, centre: c }),
+        SupportShape::CapsuleEllipse(r1, r2, r3) => Some(Turning::CapsuleEllipse {
+            r: (r1, r2, r3),
+            centre: c,
+        }),
+    }
+}
+
+/// The outer loop (module docs): exact contacts at the times the separations along their normals
+/// allow. `None`: out of contacts or steps, or a value the method cannot use.
+#[allow(clippy::too_many_arguments)]
+fn advance(
+    sa: SupportShape,
+    sb: SupportShape,
+    g: Parry,
+    turning: Turning,
+    k: &Kinematics,
+    t0: Real,
+    t1: Real,
+    target: Real,
+    tol: Real,
+    mut first: Option<Contact>,
+) -> Option<Found> {
+    let mut u = t0;
+    // Contacts within `fine` of the target are taken; within `tol`, where the separations make
+    // no more progress (a graze between the two).
+    let fine = CROSSING_FRACTION * tol;
+    for contacts in 1..=ADVANCE_MAX_CONTACTS {
+        let c = match first.take() {
+            Some(c) => c,
+            None => contact(sa, sb, &k.pose(u), NO_SECOND_POINT, None)?,
+        };
+        let gap = c.dist - target;
+        if !gap.is_finite() || (u == t0 && gap <= tol) {
+            // In contact at the start: the caller's rules.
+            return None;
+        }
+        let hit = |at: Witnesses, u: Real| Found {
+            status: ToiStatus::Hit,
+            time: u,
+            at: Some(at),
+            rate: lowest_piece(turning, k, at.normal, 0.0, u).1,
+            contacts,
+        };
+        if gap <= fine {
+            return Some(hit(Witnesses::of(&c), u));
+        }
+        // S_n = min over B of n·q − h_A(n), taken below the level δ to far below the tolerance
+        // (Newton's steps: a step or two more than to the tolerance).
+        let h = support_value(sa, &c, c.normal)?;
+        match first_crossing(turning, k, c.normal, h + target, u, t1, fine)? {
+            Some(next) if next > u => {
+                u = next;
+                // A crossing whose witnesses show the distance within the tolerance is the time
+                // of impact without another contact query.
+                if let Some(w) = certificate(g, &k.pose(u), c.normal, target + fine) {
+                    return Some(hit(w, u));
+                }
+            }
+            _ if gap <= tol => return Some(hit(Witnesses::of(&c), u)),
+            Some(_) => return None,
+            None => {
+                return Some(Found {
+                    status: ToiStatus::NoHit,
+                    time: t1,
+                    at: None,
+                    rate: 0.0,
+                    contacts,
+                })
+            }
+        }
+    }
+    None
+}
+
+/// The contact `c` of body 1 (at the origin) and body 2 (at `pos21`, body 2's pose in body
+/// 1's frame) seen from body 2: body 2 first, in its frame.
+fn swapped(c: Contact, pos21: &Pose) -> Contact {
+    // `pos21` is B's pose in A's frame, A being body 2 of `c`: body 1's points go through it.
+    let p = &c.points[0];
+    let one = crate::query::contact::ContactPoint {
+        point1: *pos21 * p.point2,
+        point2: *pos21 * p.point1,
+        feature1: p.feature2,
+        feature2: p.feature1,
+        dist: p.dist,
+    };
+    Contact {
+        dist: c.dist,
+        normal: pos21.rotation * -c.normal,
+        points: [one; 2],
+        len: 1,
+    }
+}
+
+/// h_A(n), A's support function along `n` (its frame): closed form, or, for a
+/// `CapsuleEllipse`, from the contact `c` whose normal is `n` (A's witness is its support point
+/// along it).
+fn support_value(sa: SupportShape, c: &Contact, n: Vector) -> Option<Real> {
+    let h = match sa {
+        SupportShape::Polygon { vertices, radius, .. } => {
+            vertices.iter().map(|v| v.dot(n)).fold(Real::NEG_INFINITY, Real::max) + radius
+        }
+        SupportShape::Disc(r) => r,
+        SupportShape::Ellipse(a, b) => ((a * n.x).powi(2) + (b * n.y).powi(2)).sqrt(),
+        SupportShape::CapsuleEllipse(..) => c.points[0].point1.dot(n),
+    };
+    h.is_finite().then_some(h)
+}
+
+/// The lowest piece of S_n + h_A(n) − `h` at clock time `u`: its value and derivative.
+fn lowest_piece(turning: Turning, k: &Kinematics, n: Vector, h: Real, u: Real) -> (Real, Real) {
+    let mut lowest = (Real::INFINITY, 0.0);
+    pieces(turning, k, n, h, u, |f, df, _| {
+        if f < lowest.0 {
+            lowest = (f, df);
+        }
+    });
+    lowest
+}
+
+/// Calls `each(f, f′, ρ)` for every piece of min over B of n·q − `h` at clock time `u` (module
+/// docs: with `h` = h_A(n) + δ, the pieces of S_n − δ); answers the longest step over which
+/// these pieces bound S_n (infinite but for a `CapsuleEllipse`, whose pieces change with the
+/// direction).
+fn pieces(
+    turning: Turning,
+    k: &Kinematics,
+    n: Vector,
+    h: Real,
+    u: Real,
+    mut each: impl FnMut(Real, Real, Real),
+) -> Real {
+    let (x, dtau) = k.x(u);
+    let theta = k.theta0 + k.omega * u;
+    let (s, c) = theta.sin_cos();
+    // w = R(−θ) n and its perpendicular, in B's frame.
+    let w = Vector::new(c * n.x + s * n.y, -s * n.x + c * n.y);
+    let pw = perp(w);
+    let base = n.dot(x) - h;
+    let dbase = n.dot(k.d) * dtau;
+    match turning {
+        Turning::Polygon {
+            vertices,
+            radius,
+            centre,
+        } => {
+            for v in vertices {
+                // f = n·x + w·(v − c) − r − h;  f′ = n·d τ′ − θ′ perp(w)·(v − c).
+                let p = *v - centre;
+                each(base + w.dot(p) - radius, dbase - k.omega * pw.dot(p), p.length());
+            }
+        }
+        Turning::Ellipse { a, b, centre } => {
+            let (wx, wy) = (a * w.x, b * w.y);
+            let kk = (wx * wx + wy * wy).sqrt();
+            // The support point of the centred ellipse along w: (a² w_x, b² w_y)/k.
+            let sp = Vector::new(a * wx, b * wy) / kk;
+            let rho = a.max(b) * a.max(b) / a.min(b) + centre.length();
+            each(base - kk - w.dot(centre), dbase + k.omega * pw.dot(sp + centre), rho);
+        }
+        Turning::CapsuleEllipse {
+            r: (r1, r2, r3),
+            centre,
+        } => {
+            // min over B of w·q = −h(u), u = −w: the half ellipse (r3, r1 + r2) for u_x < 0; the
+            // two arcs (radius r1 about (0, ±r2)) and the segment x = r1 for u_x ≥ 0, where
+            // −h(u) = min over the arcs' centres of −(0, ±r2)·u − r1 (the segment's normal is a
+            // concave kink between them). h is C¹ across u_x = 0 (the boundary's normal is
+            // continuous there), so each region's pieces bound S_n until u leaves the region:
+            // the step is capped where it may (u turns at |θ′|); next to the boundary both
+            // regions' pieces are taken, which agree there to first order.
+            let u = -w;
+            let b = r1 + r2;
+            let rho = (r3 * r3 / b).max(b * b / r3).max(r1).max(r3).max(b) + centre.length();
+            let to_boundary = u.x.abs().min(1.0).asin();
+            let near = to_boundary < CAPSULE_BOUNDARY_ANGLE;
+            if u.x < 0.0 || near {
+                let (x, y) = (r3 * u.x, b * u.y);
+                let h = (x * x + y * y).sqrt();
+                let sp = Vector::new(r3 * x, b * y) / h;
+                // d/du of −h(−w) − w·c is −θ′ perp(w)·(s − c), s = ∇h(u) the support point.
+                each(base - h - w.dot(centre), dbase - k.omega * pw.dot(sp - centre), rho);
+            }
+            if u.x >= 0.0 || near {
+                for arc in [Vector::new(0.0, r2), Vector::new(0.0, -r2)] {
+                    // −arc·u − r1 = w·arc − r1: a vertex with radius r1.
+                    let p = arc - centre;
+                    each(base + w.dot(p) - r1, dbase - k.omega * pw.dot(p), rho);
+                }
+            }
+            let angle = if near { FRAC_PI_2 } else { to_boundary };
+            return if k.omega != 0.0 {
+                angle / k.omega.abs()
+            } else {
+                Real::INFINITY
+            };
+        }
+    }
+    Real::INFINITY
+}
+
+/// The first clock time in `[u, u1]` at which S_n − `level` comes within `tol` of 0, by safe
+/// steps from below each piece's parabola (module docs); `Some(None)`: none in the window;
+/// `None`: out of steps or not finite.
+fn first_crossing(
+    turning: Turning,
+    k: &Kinematics,
+    n: Vector,
+    level: Real,
+    mut u: Real,
+    u1: Real,
+    tol: Real,
+) -> Option<Option<Real>> {
+    // |n·d|·max|τ″| over the rest of the window, the translation's share of every bound.
+    let nd = n.dot(k.d).abs() * k.clock.bounds_over(u, u1).d2;
+    let w2 = k.omega * k.omega;
+    for _ in 0..ADVANCE_MAX_STEPS {
+        let mut step = Real::INFINITY;
+        let mut lowest = Real::INFINITY;
+        let cap = pieces(turning, k, n, level, u, |f, df, rho| {
+            lowest = lowest.min(f);
+            let kk = nd + w2 * rho;
+            // The first root of f + f′s − K s²/2 (the step that is safe for this piece), in the
+            // form without cancellation: 2f/(√(f′² + 2Kf) − f′) when the piece comes down.
+            let f = f.max(0.0);
+            let root = (df * df + 2.0 * kk * f).sqrt();
+            let s = if df < 0.0 {
+                2.0 * f / (root - df)
+            } else if kk > 0.0 {
+                (df + root) / kk
+            } else {
+                Real::INFINITY
+            };
+            step = step.min(s);
+        });
+        let step = step.min(cap);
+        if !(lowest.is_finite() && step >= 0.0) {
+            return None;
+        }
+        if lowest <= tol {
+            return Some(Some(u));
+        }
+        let next = u + step;
+        if next >= u1 {
+            return Some(None);
+        }
+        if next <= u {
+            // Below rounding: the crossing is here.
+            return Some(Some(u));
+        }
+        u = next;
+    }
+    None
+}
+
+/// The answer in the caller's order and on the path's time.
+fn finish(r: Found, on: &OnPath, k: &Kinematics, b_first: bool) -> TimeOfImpact {
+    let cost = ToiCost {
+        evaluations: r.contacts,
+        ..ToiCost::default()
+    };
+    let (time, per_clock) = match &on.clock {
+        None => (r.time, 1.0),
+        Some(c) => (c.path_time(r.time), c.jet(r.time).d1),
+    };
+    let mut out = TimeOfImpact {
+        status: r.status,
+        time,
+        distance: 0.0,
+        distance_rate: 0.0,
+        point1: Vector::ZERO,
+        point2: Vector::ZERO,
+        normal1: Vector::X,
+        normal2: -Vector::X,
+        cost,
+    };
+    if let Some(w) = r.at {
+        // A's frame: A's witness is in its own frame; B's goes to B's.
+        let pose = k.pose(r.time);
+        out.distance = w.dist;
+        out.distance_rate = if per_clock > 0.0 { r.rate / per_clock } else { r.rate };
+        out.point1 = w.point_a;
+        out.point2 = pose.inverse_transform_point(w.point_b);
+        out.normal1 = w.normal;
+        out.normal2 = pose.rotation.inverse() * -w.normal;
+    }
+    if b_first {
+        out.swapped()
+    } else {
+        out
+    }
+}
