@@ -349,6 +349,7 @@ macro_rules! composite_helpers {
 
         /// The manifold list of a convex pair made one manifold (the first, kept for its data,
         /// or a new one) with no sub-shapes.
+        #[allow(dead_code)]
         pub(crate) fn single_manifold<M: Default + Clone, C: Default + Copy>(
             manifolds: &mut Vec<ContactManifold<M, C>>,
         ) -> &mut ContactManifold<M, C> {

@@ -15,9 +15,11 @@
 //! Each radius is exact for the shapes the contact query reads (polygons, discs, ellipses and
 //! `CapsuleEllipse`s): the inradius about the centroid in closed form.
 
+use crate::parry_shape::vertex_id;
 use crate::parry_shape::{capsule_ellipse_core, polygon_core, Core};
 use crate::query::contact::{Contact, SupportShape};
 use parry2d_f64::math::{Pose, Vector};
+use parry2d_f64::query::{ContactManifold, TrackedContact};
 
 /// The core contact's disc, as a fraction of the core's radius (the inradius about the
 /// centroid). Larger than rapier's CCD core ([`super::rapier_rule::CastPolicy::CORE`]): the
@@ -25,68 +27,137 @@ use parry2d_f64::math::{Pose, Vector};
 pub(crate) const CORE_CONTACT_FRACTION: f64 = 0.5;
 
 /// The core contact of a pair whose exact contact is `c` (body 1 at the origin, body 2 at
-/// `pos12`), in body 1's frame: the point of a body's core disc ([`CORE_CONTACT_FRACTION`] of its
-/// core) facing the other body along the contact normal n, and the point of the other body's
-/// supporting line (the line through its witness, normal to n) opposite it, with the gap
-/// between them along n. Of the two bodies the one whose centre is nearer the other's
-/// supporting line is taken: the body at risk of passing the other (a wall's or a segment's
-/// centre lies far behind or on its own face, or it has no core at all). `None` when neither
-/// body has a core.
+/// `pos12`), in body 1's frame: a speculative point pair along the contact normal n between a
+/// body's core disc ([`CORE_CONTACT_FRACTION`] of its core) and the other body's supporting line
+/// (the line through its witness, normal to n), with the gap between them along n.
 ///
-/// The gap along n is a lower bound on the core's distance to the other body (the other body
-/// lies beyond its supporting line), so the constraint it makes — the core may not close the
-/// gap along n faster than the step allows — never holds back a motion that keeps the core off
-/// the other body along n.
+/// The core's point lies on its body's *centre line* (the line through its centroid along n),
+/// the other point on the other body's supporting line opposite it: the pair acts along one
+/// line, as a contact does. A velocity along n at a point of a body's centre line is its
+/// centre's, so the constraint the pair makes — the core may not close the gap along n faster
+/// than the step allows — holds the core's body by its translation, whatever its spin (the
+/// other point moves with the other body's spin: a convex pair gets both bodies' core
+/// contacts, [`core_contacts`]). The gap is a lower bound on the core's distance to the other
+/// body (the other body lies beyond its supporting line), so the constraint never holds back a
+/// translation that keeps the core off the other body along n.
+///
+/// Of the two bodies the smaller one (its reach about its centroid) is taken, for a manifold
+/// that holds one core contact (the part of a composite shape: a compact body against a piece
+/// of level geometry; a segment has no core at all); `contact_manifolds` of a convex pair gives
+/// both bodies' in a manifold of their own ([`core_manifold`]). `None` when neither body has a
+/// core.
 pub(crate) fn core_contact(s1: SupportShape, s2: SupportShape, pos12: &Pose, c: &Contact) -> Option<CoreContact> {
+    let [k1, k2] = core_contacts(s1, s2, pos12, c);
+    match (k1, k2) {
+        (Some(a), Some(b)) => {
+            let reach1 = reach(s1, core_of(s1).map_or(Vector::ZERO, |k| k.centre));
+            let reach2 = reach(s2, core_of(s2).map_or(Vector::ZERO, |k| k.centre));
+            Some(if reach2 < reach1 { b } else { a })
+        }
+        (a, b) => a.or(b),
+    }
+}
+
+/// The largest distance from `centre` to a point of the shape (an upper bound for a
+/// `CapsuleEllipse`: the larger of its half-ellipse's semi-axes plus the offset).
+fn reach(s: SupportShape, centre: Vector) -> f64 {
+    match s {
+        SupportShape::Disc(r) => r + centre.length(),
+        SupportShape::Ellipse(a, b) => a.max(b) + centre.length(),
+        SupportShape::Polygon { vertices, radius, .. } => {
+            vertices.iter().map(|v| (*v - centre).length()).fold(0.0, f64::max) + radius
+        }
+        SupportShape::CapsuleEllipse(r1, r2, r3) => r3.max(r1 + r2) + centre.length(),
+    }
+}
+
+/// The core contacts of both bodies of a pair whose exact contact is `c` ([`core_contact`]), in
+/// body 1's frame; `None` for a body without a core (a segment) or a value that is not finite.
+pub(crate) fn core_contacts(s1: SupportShape, s2: SupportShape, pos12: &Pose, c: &Contact) -> [Option<CoreContact>; 2] {
     let n = c.normal;
     let w = &c.points[0];
-    let mut best: Option<(f64, CoreContact)> = None;
-    if let Some(k) = core_of(s1).filter(|k| k.radius > 0.0) {
-        // Body 1's core towards body 2: its line through body 2's witness, across n.
-        let height = (w.point2 - k.centre).dot(n);
-        let q = k.centre + n * (CORE_CONTACT_FRACTION * k.radius);
+    let (k1, k2) = (core_of(s1), core_of(s2));
+    // A body's centroid (a segment's midpoint), or its witness when it has none.
+    let c1 = k1.map_or(w.point1, |k| k.centre);
+    let c2 = k2.map_or(w.point2, |k| pos12 * k.centre);
+    let finite = |k: CoreContact| (k.point1.is_finite() && k.point2.is_finite() && k.dist.is_finite()).then_some(k);
+    let one = k1.filter(|k| k.radius > 0.0).and_then(|k| {
+        // Body 1's core towards body 2, and body 2's supporting line on its centre line.
+        let q = c1 + n * (CORE_CONTACT_FRACTION * k.radius);
         let gap = (w.point2 - q).dot(n);
-        best = Some((
-            height.abs(),
-            CoreContact {
-                point1: q,
-                point2: q + n * gap,
-                dist: gap,
-                centre: k.centre,
-                body: 0,
-            },
-        ));
-    }
-    if let Some(k) = core_of(s2).filter(|k| k.radius > 0.0) {
-        let centre = pos12 * k.centre;
-        let height = (centre - w.point1).dot(n);
-        let q = centre - n * (CORE_CONTACT_FRACTION * k.radius);
+        finite(CoreContact {
+            point1: q,
+            point2: q + n * gap,
+            dist: gap,
+            centre: c1,
+            radius: k.radius,
+            body: 0,
+        })
+    });
+    let two = k2.filter(|k| k.radius > 0.0).and_then(|k| {
+        let q = c2 - n * (CORE_CONTACT_FRACTION * k.radius);
         let gap = (q - w.point1).dot(n);
-        if best.is_none_or(|b| height.abs() < b.0) {
-            best = Some((
-                height.abs(),
-                CoreContact {
-                    point1: q - n * gap,
-                    point2: q,
-                    dist: gap,
-                    centre,
-                    body: 1,
-                },
-            ));
+        finite(CoreContact {
+            point1: q - n * gap,
+            point2: q,
+            dist: gap,
+            centre: c2,
+            radius: k.radius,
+            body: 1,
+        })
+    });
+    [one, two]
+}
+
+/// The feature code of a core contact on both bodies: the largest vertex code but one, which no
+/// shape's vertex numbering reaches (body 2's core: the code below it).
+pub(crate) const CORE_FEATURE: u32 = 0x3fff_fffe;
+
+/// Fills `manifold` with both bodies' core contacts ([`core_contacts`]) of a pair whose exact
+/// contact is `c`, in a manifold of their own beside the exact points' (the normal of `c`), when
+/// `with` (the pair has a contact point): speculative points that rapier's solver keeps only
+/// when the bodies' velocities would close them within the step. Their ids are kept from the
+/// previous points. False, with the manifold left as it was, when the normal is not finite in
+/// body 2's frame.
+pub(crate) fn core_manifold<M, C: Default + Copy>(
+    pos12: &Pose,
+    c: &Contact,
+    cores: [Option<CoreContact>; 2],
+    with: bool,
+    manifold: &mut ContactManifold<M, C>,
+) -> bool {
+    let n2 = pos12.inverse_transform_vector(-c.normal);
+    if !n2.is_finite() {
+        return false;
+    }
+    let (old, n_old) = super::parry_pairs::previous_points(&manifold.points);
+    manifold.clear();
+    manifold.local_n1 = c.normal;
+    manifold.local_n2 = n2;
+    if with {
+        for (k, code) in cores.iter().zip([CORE_FEATURE, CORE_FEATURE - 1]) {
+            if let Some(k) = k {
+                let id = vertex_id(code);
+                let p2 = pos12.inverse_transform_point(k.point2);
+                manifold.points.push(TrackedContact::new(k.point1, p2, id, id, k.dist));
+            }
         }
     }
-    best.map(|b| b.1)
-        .filter(|b| b.point1.is_finite() && b.point2.is_finite() && b.dist.is_finite())
+    manifold.match_contacts(&old[..n_old]);
+    true
 }
 
 /// A core contact ([`core_contact`]): its points on bodies 1 and 2 in body 1's frame, its gap
-/// along the contact normal, the core's centre (body 1's frame) and its body (0 or 1).
+/// along the contact normal, the core's centre (body 1's frame) and radius, and its body (0 or
+/// 1).
 #[derive(Copy, Clone, Debug, PartialEq)]
 pub(crate) struct CoreContact {
     pub point1: Vector,
     pub point2: Vector,
     pub dist: f64,
     pub centre: Vector,
+    /// The core's radius.
+    pub radius: f64,
     pub body: usize,
 }
 

@@ -51,12 +51,13 @@
 //! contacts while the pose changes by less than its thresholds, which makes smooth bodies roll
 //! over small facets).
 
-use super::composite::{composite_manifolds, is_composite_like, single_manifold};
-use super::core_disc::{core_contact, CoreContact};
+use super::composite::{composite_manifolds, is_composite_like};
+use super::core_disc::{core_contact, core_contacts, core_manifold, core_of, CoreContact, CORE_FEATURE};
 use super::input_guard;
 use super::parry_fallback::{pair_size, parry_within, pushed_together, TOUCH_PUSH};
 use super::parry_pairs;
 use super::route::{own_curve, route, RouteScratch};
+use super::segment_side::from_centre_side;
 use super::support_shape::{exact_contact_of, support_shape, SupportScratch};
 use crate::curve::pieces::{flat_pieces, piece_index, piece_is_flat};
 use crate::curve::ConvexCurve;
@@ -71,10 +72,6 @@ use parry2d_f64::query::{
     Unsupported,
 };
 use parry2d_f64::shape::{HalfSpace, PackedFeatureId, Shape, ShapeType};
-
-/// The feature code of a core contact on both bodies ([`super::core_disc`]): the largest
-/// vertex code but one, which no shape's vertex numbering reaches.
-const CORE_FEATURE: u32 = 0x3fff_fffe;
 
 /// The feature id of the point of `c` whose outward normal is `n` (see the module docs).
 fn curve_fid(c: &dyn ConvexCurve, n: Vector) -> PackedFeatureId {
@@ -328,6 +325,7 @@ impl SmoothDispatcher {
         g2: &dyn Shape,
         prediction: Real,
         manifold: &mut ContactManifold<M, C>,
+        cores: Option<&mut ContactManifold<M, C>>,
     ) -> bool {
         // parry's own pairs (e.g. the parts of a compound) stay parry's.
         if g1.shape_type() != ShapeType::Custom && g2.shape_type() != ShapeType::Custom {
@@ -339,15 +337,34 @@ impl SmoothDispatcher {
         };
         if spheres_apart(pos12, g1, g2, prediction) {
             manifold.clear();
+            if let Some(m) = cores {
+                m.clear();
+            }
             return true;
         }
         let hint = Some(manifold.local_n1).filter(|n| self.warm_start && n.is_finite() && *n != Vector::ZERO);
-        match exact_contact_of(s1, s2, pos12, hint) {
-            Some(c) => {
-                let core = core_contact(s1, s2, pos12, &c);
-                manifold_from_contact(pos12, &c, core, prediction, manifold)
+        let Some(c) = exact_contact_of(s1, s2, pos12, hint) else {
+            return false;
+        };
+        // A wall of no thickness: the contact from the side the body's centre is on.
+        let c = match (core_of(s1), core_of(s2)) {
+            (Some(k1), Some(k2)) => from_centre_side(c, pos12, g1, g2, k1.centre, k2.centre),
+            _ => c,
+        };
+        match cores {
+            // Both bodies' cores, in a manifold of their own.
+            Some(m) => {
+                manifold_from_contact(pos12, &c, None, prediction, manifold)
+                    && core_manifold(
+                        pos12,
+                        &c,
+                        core_contacts(s1, s2, pos12, &c),
+                        !manifold.points.is_empty(),
+                        m,
+                    )
             }
-            None => false,
+            // One core, with the exact points (a part of a composite shape).
+            None => manifold_from_contact(pos12, &c, core_contact(s1, s2, pos12, &c), prediction, manifold),
         }
     }
 }
@@ -393,8 +410,21 @@ where
             let finite = manifolds.iter().all(input_guard::AllFinite::all_finite);
             return guarded(manifolds, finite);
         }
-        let manifold = single_manifold(manifolds);
-        self.contact_manifold_convex_convex(pos12, g1, g2, None, None, prediction, manifold)
+        // Two manifolds, always, for a stable count (rapier's solver graph keeps manifolds by
+        // their place in the list): the pair's points, and the bodies' core contacts.
+        manifolds.truncate(2);
+        while manifolds.len() < 2 {
+            manifolds.push(ContactManifold::new());
+        }
+        for m in manifolds.iter_mut() {
+            (m.subshape1, m.subshape2, m.subshape_poses) = (0, 0, None);
+        }
+        let (main, cores) = manifolds.split_at_mut(1);
+        if self.exact_manifold(pos12, g1, g2, prediction, &mut main[0], Some(&mut cores[0])) {
+            return Ok(());
+        }
+        cores[0].clear();
+        self.contact_manifold_convex_convex(pos12, g1, g2, None, None, prediction, &mut main[0])
     }
 
     fn contact_manifold_convex_convex(
@@ -408,7 +438,7 @@ where
         manifold: &mut ContactManifold<M, C>,
     ) -> Result<(), Unsupported> {
         let unconstrained = normal_constraints1.is_none() && normal_constraints2.is_none();
-        if unconstrained && self.exact_manifold(pos12, g1, g2, prediction, manifold) {
+        if unconstrained && self.exact_manifold(pos12, g1, g2, prediction, manifold, None) {
             return Ok(());
         }
         let ours = own_curve(g1).is_some() || own_curve(g2).is_some();
@@ -536,21 +566,14 @@ mod tests {
     }
 
     #[test]
-    fn ellipse_on_box_is_one_exact_point_and_its_core_contact() {
+    fn ellipse_on_box_is_one_exact_point_and_both_cores_in_a_manifold_of_their_own() {
         let e = Ellipse::new(0.5, 0.2);
         let b = Cuboid::new(Vector::new(2.0, 0.5));
         // Ellipse 0.19 above the box top (penetration 0.01).
         let pos12 = Pose::translation(0.1, 0.69);
         let m = manifolds(&b, &e, &pos12, 0.0);
-        assert_eq!(m.len(), 1);
-        assert_eq!(m[0].points.len(), 2);
-        // The core contact: the point of the ellipse's core (half its inradius 0.2 about its
-        // centre) facing the box, 0.19 − 0.1 above the box's face.
-        let k = &m[0].points[1];
-        assert!((k.dist - 0.09).abs() < 1e-12, "{}", k.dist);
-        assert!((k.local_p2 - Vector::new(0.0, -0.1)).length() < 1e-12);
-        assert!((k.local_p1 - Vector::new(0.1, 0.5)).length() < 1e-12);
-        assert_eq!(k.fid2, vertex_id(CORE_FEATURE));
+        assert_eq!(m.len(), 2);
+        assert_eq!(m[0].points.len(), 1);
         let p = &m[0].points[0];
         assert!((p.dist + 0.01).abs() < 1e-12, "{}", p.dist);
         assert!((m[0].local_n1 - Vector::Y).length() < 1e-12);
@@ -558,22 +581,59 @@ mod tests {
         assert!((p.local_p2 - Vector::new(0.0, -0.2)).length() < 1e-9);
         assert!(p.fid1.is_face());
         assert_eq!(p.fid2, PackedFeatureId::vertex(0));
-        // Swapped order gives the mirrored manifold.
+        // The core contacts, along the same normal: the box's core (half its inradius 0.5 about
+        // its centre, the point (0, 0.25)) 0.24 below the ellipse's lowest line (y = 0.49), and
+        // the ellipse's (half its inradius 0.2, the point 0.1 below its centre) 0.09 above the
+        // box's face.
+        let cores = &m[1].points;
+        assert_eq!(cores.len(), 2);
+        assert!((m[1].local_n1 - Vector::Y).length() < 1e-12);
+        let (k1, k2) = (&cores[0], &cores[1]);
+        assert!((k1.dist - 0.24).abs() < 1e-12, "{}", k1.dist);
+        assert!((k1.local_p1 - Vector::new(0.0, 0.25)).length() < 1e-12);
+        assert_eq!((k1.fid1, k1.fid2), (vertex_id(CORE_FEATURE), vertex_id(CORE_FEATURE)));
+        assert!((k2.dist - 0.09).abs() < 1e-12, "{}", k2.dist);
+        assert!((k2.local_p2 - Vector::new(0.0, -0.1)).length() < 1e-12);
+        assert!((k2.local_p1 - Vector::new(0.1, 0.5)).length() < 1e-12);
+        assert_eq!(k2.fid2, vertex_id(CORE_FEATURE - 1));
+        // Swapped order gives the mirrored manifolds.
         let m2 = manifolds(&e, &b, &pos12.inverse(), 0.0);
         let q = &m2[0].points[0];
         assert!((q.dist - p.dist).abs() < 1e-12);
         assert!((q.local_p1 - p.local_p2).length() < 1e-9);
         assert_eq!(q.fid2, p.fid1);
-        assert_eq!(m2[0].points.len(), 2);
-        assert_eq!(m2[0].points[1].fid1, vertex_id(CORE_FEATURE));
-        // Apart beyond the prediction: no point; within it: the exact point, and the core
-        // contact with it (kept beyond the prediction, as the solver's second point).
+        let swapped: Vec<f64> = m2[1].points.iter().map(|k| k.dist).collect();
+        assert!(
+            (swapped[0] - 0.09).abs() < 1e-12 && (swapped[1] - 0.24).abs() < 1e-12,
+            "{swapped:?}"
+        );
+        // Apart beyond the prediction: no point, no core contact (two manifolds still, for a
+        // stable count); within it, the exact point and the core contacts, whatever their gaps.
         let far = Pose::translation(0.0, 0.75);
-        assert!(manifolds(&b, &e, &far, 0.01).iter().all(|m| m.points.is_empty()));
+        let apart = manifolds(&b, &e, &far, 0.01);
+        assert_eq!(apart.len(), 2);
+        assert!(apart.iter().all(|m| m.points.is_empty()));
         let near = manifolds(&b, &e, &far, 0.1);
-        assert_eq!(near[0].points.len(), 2);
+        assert_eq!(near[0].points.len(), 1);
         assert!((near[0].points[0].dist - 0.05).abs() < 1e-12);
-        assert!((near[0].points[1].dist - 0.15).abs() < 1e-12);
+        assert_eq!(near[1].points.len(), 2);
+    }
+
+    #[test]
+    fn a_part_of_a_compound_carries_the_core_contact_of_the_smaller_body() {
+        // A single manifold per part: the exact point and one core contact, the ellipse's (0.5
+        // from its centre to its farthest point, the box 2.06).
+        let e = Ellipse::new(0.5, 0.2);
+        let b = Cuboid::new(Vector::new(2.0, 0.5));
+        let pos12 = Pose::translation(0.1, 0.69);
+        let mut m = ContactManifold::<(), ()>::new();
+        SmoothDispatcher::default()
+            .contact_manifold_convex_convex(&pos12, &b, &e, None, None, 0.0, &mut m)
+            .unwrap();
+        assert_eq!(m.points.len(), 2);
+        let k = &m.points[1];
+        assert!((k.dist - 0.09).abs() < 1e-12, "{}", k.dist);
+        assert_eq!(k.fid2, vertex_id(CORE_FEATURE));
     }
 
     #[test]

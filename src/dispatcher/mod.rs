@@ -57,6 +57,7 @@ mod parry_pairs;
 mod queries;
 pub(crate) mod rapier_rule;
 pub(crate) mod route;
+mod segment_side;
 pub(crate) mod support_shape;
 mod translation_level;
 

@@ -145,8 +145,35 @@ where
         if own_f64(g1).is_none() && own_f64(g2).is_none() {
             return DefaultQueryDispatcher.contact_manifolds(pos12, g1, g2, prediction, manifolds, workspace);
         }
-        let manifold = single_manifold(manifolds);
-        self.contact_manifold_convex_convex(pos12, g1, g2, None, None, prediction, manifold)
+        let Some((a, b)) = widen_pair(g1, g2) else {
+            let manifold = single_manifold(manifolds);
+            return self.contact_manifold_convex_convex(pos12, g1, g2, None, None, prediction, manifold);
+        };
+        // The core's manifolds of the pair (its points, then the bodies' core contacts: two
+        // manifolds, always, for rapier's solver graph), rounded into two of ours.
+        manifolds.truncate(2);
+        while manifolds.len() < 2 {
+            manifolds.push(ContactManifold::new());
+        }
+        let mut wide: Vec<q64::ContactManifold<(), ()>> = manifolds.iter().map(widened).collect();
+        let answered = self.core.contact_manifolds(
+            &pose64(pos12),
+            a.get(),
+            b.get(),
+            prediction as f64,
+            &mut wide,
+            &mut None,
+        );
+        wide.resize_with(2, q64::ContactManifold::new);
+        let rounded = manifolds.iter_mut().zip(&wide).all(|(m, w)| {
+            (m.subshape1, m.subshape2, m.subshape_poses) = (0, 0, None);
+            round_into(w, m)
+        });
+        if answered.is_err() || !rounded {
+            manifolds.iter_mut().for_each(|m| m.clear());
+            return Err(Unsupported);
+        }
+        Ok(())
     }
 
     fn contact_manifold_convex_convex(

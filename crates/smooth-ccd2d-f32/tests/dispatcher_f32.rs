@@ -208,18 +208,26 @@ fn contact_data_is_kept_by_feature_id() {
     let pos = Pose::new(Vector::new(0.0, 0.5 + 0.5f32.sqrt() * 0.5 + 0.05 - 1e-3), quarter);
     d.contact_manifolds(&pos, &ground, &h, 0.05, &mut manifolds, &mut None)
         .expect("manifolds");
-    assert_eq!(manifolds.len(), 1);
+    // Two manifolds: the pair's points, then the bodies' core contacts (both have a core).
+    assert_eq!(manifolds.len(), 2);
     assert_eq!(manifolds[0].points.len(), 2);
-    for (k, p) in manifolds[0].points.iter_mut().enumerate() {
+    assert_eq!(manifolds[1].points.len(), 2);
+    for (k, p) in manifolds.iter_mut().flat_map(|m| m.points.iter_mut()).enumerate() {
         p.data = 7 + k as u32;
     }
-    let before: Vec<_> = manifolds[0].points.iter().map(|p| (p.fid1, p.fid2, p.data)).collect();
-    assert_ne!((before[0].0, before[0].1), (before[1].0, before[1].1), "distinct ids");
+    let ids = |ms: &[ContactManifold<(), u32>]| -> Vec<Vec<_>> {
+        ms.iter()
+            .map(|m| m.points.iter().map(|p| (p.fid1, p.fid2, p.data)).collect())
+            .collect()
+    };
+    let before = ids(&manifolds);
+    for m in &before {
+        assert_ne!((m[0].0, m[0].1), (m[1].0, m[1].1), "distinct ids");
+    }
     let moved = Pose::new(pos.translation + Vector::new(1e-4, -1e-4), quarter);
     d.contact_manifolds(&moved, &ground, &h, 0.05, &mut manifolds, &mut None)
         .expect("manifolds");
-    let after: Vec<_> = manifolds[0].points.iter().map(|p| (p.fid1, p.fid2, p.data)).collect();
-    assert_eq!(before, after);
+    assert_eq!(before, ids(&manifolds));
 }
 
 /// Non-finite poses and motions are refused (`Unsupported`), never answered with a NaN.
