@@ -5,6 +5,7 @@
 use super::parry_fallback::{pair_size, parry_cast_nonlinear, parry_contact};
 use super::SmoothDispatcher;
 use crate::numerics::math::{perp, Pose, Real, Vector};
+use crate::numerics::motion::PairFrame;
 use crate::query::stationary::StationaryDistance;
 use crate::query::toi::{TimeOfImpact, ToiStatus};
 use parry2d_f64::query::{NonlinearRigidMotion, ShapeCastHit, ShapeCastStatus, Unsupported};
@@ -227,7 +228,9 @@ pub(crate) fn is_window(t0: Real, t1: Real) -> bool {
 
 /// Shape 2's pose in shape 1's frame at time `t`.
 pub(crate) fn pos12_at(m1: &NonlinearRigidMotion, m2: &NonlinearRigidMotion, t: Real) -> Pose {
-    m1.position_at_time(t).inv_mul(&m2.position_at_time(t))
+    // From the pair's relative motion, as the trackers place it (issue 32): the world poses
+    // of two bodies 1e15 from the origin carry 0.1 of rounding each.
+    PairFrame::at_time(m1, m2, t).pos12()
 }
 
 /// Velocity at time `t` of the body-fixed point that is at world position `p` then.

@@ -1,7 +1,7 @@
 //! The queries on two curves: the three distances with their derivatives (`pair`), the root
 //! solver of distanceSide (`solver`), the stationary distance, the time of impact (`toi` with a
-//! strictly convex side, `gap` without one, what their step loops share in `stepping`), and both
-//! against a half-space.
+//! strictly convex side, `gap` without one, what their step loops share in `stepping`, the time
+//! scale of extreme motions in `time_scale`), and both against a half-space.
 
 pub(crate) mod contact;
 pub(crate) mod gap;
@@ -10,4 +10,5 @@ pub(crate) mod pair;
 pub(crate) mod solver;
 pub(crate) mod stationary;
 pub(crate) mod stepping;
+pub(crate) mod time_scale;
 pub(crate) mod toi;

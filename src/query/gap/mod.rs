@@ -56,7 +56,8 @@ mod tracker;
 pub(crate) use side::{CurveSide, PolySide, Side};
 
 use crate::error::{finite, QueryError};
-use crate::numerics::math::Vector;
+use crate::numerics::math::{direction, Vector};
+use crate::query::time_scale::rescaled;
 use crate::query::toi::{TimeOfImpact, ToiOptions};
 use parry2d_f64::query::NonlinearRigidMotion;
 use tracker::GapTracker;
@@ -72,6 +73,13 @@ pub(crate) fn gap_time_of_impact(
     end_time: f64,
     options: &ToiOptions,
 ) -> Result<TimeOfImpact, QueryError> {
+    // Rates beyond 2^±64 per second: the same query on a time scale where they are about 1
+    // (`query::time_scale`, issue 32).
+    let size = side1.radius_about(Vector::ZERO).max(side2.radius_about(Vector::ZERO));
+    if let Some(r) = rescaled(motion1, motion2, start_time, end_time, size) {
+        let a = GapTracker::new(side1, &r.m1, side2, &r.m2, r.t0, r.t1, options)?.run()?;
+        return finite(Ok(r.answer(a)));
+    }
     finite(GapTracker::new(side1, motion1, side2, motion2, start_time, end_time, options)?.run())
 }
 
@@ -91,7 +99,7 @@ pub(crate) fn gap_distance(
     };
     let fr = pair.motion.frame(0.0);
     let t = pos12.translation;
-    let u0 = if t.length() > 0.0 { t.normalize() } else { Vector::X };
+    let u0 = direction(t);
     let at = pair.max_gap(&fr, u0, (0, 0))?;
     let (w1, w2) = pair.witnesses(&fr, &at);
     Some((at.d, w1, w2, fr.to_body(0, at.u)))
