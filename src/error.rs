@@ -14,6 +14,15 @@ pub const MIN_LENGTH: f64 = 1e-50;
 /// The largest length (or vertex coordinate) a shape accepts; see [`MIN_LENGTH`].
 pub const MAX_LENGTH: f64 = 1e50;
 
+/// The most vertices a [`crate::RoundedPolygon`] accepts (2²⁰ = 1,048,576: about 60 MB of
+/// vertices, normals and pieces). Every query on a polygon costs O(n log n) or less in its
+/// vertex count n (a stationary query O(n) at most — 12 ms for the exact distance of a
+/// 30,000-gon against a box —, a cast O(n) per turn of the pair), so the limit is one of
+/// memory: the constructors check the count before they allocate
+/// ([`ShapeError::TooManyVertices`]), where `RoundedPolygon::try_regular(1 << 40, …)` asked for
+/// 17 TB and aborted the process.
+pub const MAX_VERTICES: usize = 1 << 20;
+
 /// Why a shape could not be built.
 #[derive(Clone, Debug, PartialEq)]
 pub enum ShapeError {
@@ -51,6 +60,11 @@ pub enum ShapeError {
         /// How many were given.
         count: usize,
     },
+    /// More vertices than a polygon accepts ([`MAX_VERTICES`]).
+    TooManyVertices {
+        /// How many were asked for.
+        count: usize,
+    },
     /// A vertex is NaN or infinite.
     VertexNotFinite {
         /// Its index.
@@ -69,6 +83,17 @@ pub enum ShapeError {
     },
     /// A parameter combination the shape does not support.
     Invalid(&'static str),
+    /// A user's curve breaks the [`crate::ConvexCurve`] contract where
+    /// [`crate::CustomCurve::try_new`] checks it (on a fixed sample of the curve).
+    BrokenContract {
+        /// The method that answered wrongly (`"eval"`, `"bounding_radius"`, `"support_jet"`, …).
+        method: &'static str,
+        /// What was wrong.
+        reason: &'static str,
+        /// Where: the φ, or the angle of the direction, at which it was found, or the value
+        /// returned (NaN when none applies).
+        at: f64,
+    },
 }
 
 impl fmt::Display for ShapeError {
@@ -100,7 +125,14 @@ impl fmt::Display for ShapeError {
                 f,
                 "parameter `vertices`: not a strictly convex counter-clockwise polygon at vertex {index}"
             ),
+            ShapeError::TooManyVertices { count } => write!(
+                f,
+                "parameter `vertices`: {count} vertices, more than the {MAX_VERTICES} accepted"
+            ),
             ShapeError::Invalid(msg) => f.write_str(msg),
+            ShapeError::BrokenContract { method, reason, at } => {
+                write!(f, "ConvexCurve::{method} breaks its contract: {reason} (at {at})")
+            }
         }
     }
 }
@@ -171,11 +203,13 @@ pub enum QueryError {
     /// [`crate::stationary_distance`] needs `obj2` strictly convex, [`crate::time_of_impact`] one of the
     /// two shapes (it swaps the roles itself).
     NotStrictlyConvex,
-    /// Every input is finite but a shape or a pose evaluated to a non-finite value: positions or
-    /// velocities so large that they overflow (beyond about 1e150), a [`crate::BallCurve`] built
-    /// with a non-finite or non-positive radius (its field is public), a user curve that returns
-    /// NaN. The crate's own constructors refuse the lengths that would do this
-    /// ([`crate::MIN_LENGTH`], [`crate::MAX_LENGTH`]).
+    /// Every input is finite but a shape or a pose evaluated to a non-finite value: positions so
+    /// large, or motions travelling so far in the window, that they overflow (beyond about
+    /// 1e150; rates alone do not: the times of impact rescale time for rates beyond 2^±64 per
+    /// second), a [`crate::BallCurve`] built with a non-finite or non-positive radius (its field
+    /// is public), a user curve that returns NaN between the points its checks sampled, or whose
+    /// `support_jet` fails there. The crate's own constructors refuse the lengths that would do
+    /// this ([`crate::MIN_LENGTH`], [`crate::MAX_LENGTH`]).
     Degenerate,
     /// A shape the query cannot take: [`crate::shape_time_of_impact`] takes this crate's shapes
     /// and parry's convex shapes (ball, cuboid, capsule, segment, triangle, convex polygon and

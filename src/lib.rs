@@ -39,11 +39,11 @@ mod shapes;
 
 pub use curve::{ConvexCurve, CurvePoint, SupportJet};
 pub use dispatcher::{shape_time_of_impact, CastPolicy, SmoothDispatcher};
-pub use error::{QueryError, ShapeError, MAX_LENGTH, MIN_LENGTH};
+pub use error::{QueryError, ShapeError, MAX_LENGTH, MAX_VERTICES, MIN_LENGTH};
 pub use numerics::angle::wrap_phi;
 pub use numerics::jet::{Dual2, Jet2, JetVec};
 pub use numerics::motion::PairFrame;
-pub use parry_shape::FLAT_FEATURE_MAX_ANGLE;
+pub use parry_shape::{MassQuadrature, QuadratureStatus, FLAT_FEATURE_MAX_ANGLE};
 pub use query::halfspace::{halfspace_distance, time_of_impact_halfspace};
 pub use query::pair::{eval_pair, eval_pair_at, PairJet};
 pub use query::path::MotionPath;

@@ -85,16 +85,54 @@ pub struct SupportJet {
 /// Implement it to add a shape; wrap the curve in [`crate::CustomCurve`] to use it with parry
 /// and rapier. Implementations must keep P and N continuous over the whole circle (including
 /// the wrap from π to −π), N unit and outward, and ω = N × N' ≥ 0.
+///
+/// # The contract, and what checks it
+///
+/// [`crate::CustomCurve::try_new`] checks what a fixed sample of the curve can show (256 values
+/// of φ and the start and middle of every piece; a tolerance of 1e-6): every number finite,
+/// the breakpoints sorted in [−π, π), the bounding radius at least every sampled |P|, the normals
+/// unit and outward and the curve convex and counter-clockwise, φ wrapped, the area of Green's
+/// theorem between the sampled polygon's and the bounding disc's, `phi_range_of_normal` and
+/// `support_point` giving support points, and the curvature bounds not contradicted by a
+/// sampled radius of curvature. A curve that fails is refused with
+/// [`crate::ShapeError::BrokenContract`] naming the method.
+///
+/// What no sample can check is the contract between its points; each method says what breaks
+/// when it does not hold. In short: the *upper bounds* (`bounding_radius`,
+/// `max_radius_of_curvature`, `support_dd_bound`, `support_dd_bound_near`) are what the time of
+/// impact's guard and bounding circles rely on to step over no contact — one too small makes a
+/// cast miss a contact or report a late one; the *lower bound* `min_radius_of_curvature` lets
+/// the stationary distance skip its global search — too large, a penetration is reported
+/// shallower than it is; `eval`'s derivatives steer the solvers and the mass quadrature —
+/// wrong, the queries are slower or less accurate (never unbounded: every loop of the crate has
+/// a cap and says when it reached it), and the mass is wrong. No broken contract makes a query
+/// panic, hang or return a NaN.
 pub trait ConvexCurve: Send + Sync + Debug + 'static {
     /// Point, normal and their derivatives at φ. φ outside [−π, π) must be wrapped.
+    ///
+    /// Checked at the sampled φ (finite, N unit and outward, P′ and N′ tangent, turning
+    /// counter-clockwise, wrapped, the area of Green's theorem). Between them: a NaN makes the
+    /// queries that meet it answer `Degenerate` / `Unsupported`; derivatives that are not those
+    /// of P and N slow the solvers (bounded: their caps) and make the mass wrong; a noisy `eval`
+    /// (computed in f32) stops the mass quadrature at its budget
+    /// ([`crate::QuadratureStatus::OutOfEvaluations`]), as accurate as the noise.
     fn eval(&self, phi: f64) -> CurvePoint;
 
     /// φ values in [−π, π), sorted, where derivatives may jump (piece ends). Empty when smooth.
+    ///
+    /// Checked (every breakpoint). A jump of the derivatives elsewhere slows the solvers near
+    /// it (they bisect where Newton stalls) and is integrated less accurately by the mass
+    /// quadrature.
     fn breakpoints(&self) -> &[f64] {
         &[]
     }
 
-    /// The largest distance from the local origin to a boundary point.
+    /// The largest distance from the local origin to a boundary point (an upper bound on it is
+    /// allowed; the tolerances of the queries scale with it, so keep it tight).
+    ///
+    /// Checked against the sampled points (and a length in the accepted range). Too small
+    /// between them: the bounding circles can part shapes that meet (a cast misses the
+    /// contact), the dispatcher's quick rejections answer "apart" for touching shapes.
     fn bounding_radius(&self) -> f64;
 
     /// The φ-interval `[lo, hi]` of boundary points whose outward normal is the unit vector
@@ -102,22 +140,35 @@ pub trait ConvexCurve: Send + Sync + Debug + 'static {
     ///
     /// The default bisects on the normal angle, which is non-decreasing in φ; closed forms are
     /// faster.
+    ///
+    /// Checked at the sampled normals. Elsewhere an answer beyond one turn is taken at its
+    /// start (the ray cast), and a wrong one gives wrong support points: wrong distances and
+    /// contacts, never a hang.
     fn phi_range_of_normal(&self, n: Vector) -> (f64, f64) {
         default_phi_range_of_normal(self, n)
     }
 
     /// For a strictly convex curve, S(m) with its curvature data (eq. 4); `None` otherwise.
+    ///
+    /// Checked at the sampled normals (present, finite, the support point's value). `None`
+    /// elsewhere makes the queries of the pair answer `Degenerate` (rapier then gets no
+    /// contact); a wrong point, wrong distances.
     fn support_jet(&self, _m: Vector) -> Option<SupportJet> {
         None
     }
 
     /// Whether [`ConvexCurve::support_jet`] is available (the curve can be object2).
+    ///
+    /// Checked: a strictly convex curve has no sampled flat piece.
     fn is_strictly_convex(&self) -> bool {
         false
     }
 
     /// An upper bound on the radius of curvature over the whole curve (used by the step guard
     /// of the time of impact); only needed for strictly convex curves.
+    ///
+    /// Checked against the sampled radii (to 1e-3). Too small between them: the guard's bound
+    /// on how fast the distance can fall is too small, and a cast can step over a contact.
     fn max_radius_of_curvature(&self) -> f64 {
         f64::INFINITY
     }
@@ -125,6 +176,9 @@ pub trait ConvexCurve: Send + Sync + Debug + 'static {
     /// A lower bound on the radius of curvature over the whole curve (0 for a curve with sharp
     /// corners; a flat piece counts as infinite). The stationary distance uses it to certify a
     /// shallow penetration depth without its global search. The default, 0, is always valid.
+    ///
+    /// Checked against the sampled radii. Too large between them: a penetration deeper than
+    /// the true smallest radius can be reported shallower (a local maximum certified global).
     fn min_radius_of_curvature(&self) -> f64 {
         0.0
     }
@@ -133,6 +187,10 @@ pub trait ConvexCurve: Send + Sync + Debug + 'static {
     /// function about the local origin (strictly convex curves only). The time of impact's
     /// step guard multiplies it by the squared relative spin. The default,
     /// `max_radius_of_curvature() + bounding_radius()`, is always valid.
+    ///
+    /// Checked against |ρ − h| at the sampled directions (to 1e-3). Too small (0 for a curve
+    /// that is not a circle about its origin): a spinning cast steps over the contact, or
+    /// reports one early.
     fn support_dd_bound(&self) -> f64 {
         self.max_radius_of_curvature() + self.bounding_radius()
     }
@@ -140,12 +198,18 @@ pub trait ConvexCurve: Send + Sync + Debug + 'static {
     /// An upper bound on |h''(ψ)| over the directions within `half_angle` of the unit vector `m`
     /// (strictly convex curves only). The time of impact's step guard uses it over the
     /// directions one step sweeps. The default is [`ConvexCurve::support_dd_bound`].
+    ///
+    /// Checked at the sampled directions over arcs of half-angle 0 and 2π/256 only: too small
+    /// over wider arcs, a cast can step over a contact.
     fn support_dd_bound_near(&self, m: Vector, half_angle: f64) -> f64 {
         let _ = (m, half_angle);
         self.support_dd_bound()
     }
 
     /// The support point in direction `n` (any unit vector): the boundary point furthest along n.
+    ///
+    /// Checked at the sampled normals. Wrong elsewhere: wrong bounding boxes and parry's
+    /// answers (GJK) for the pairs parry answers.
     fn support_point(&self, n: Vector) -> Vector {
         if let Some(j) = self.support_jet(n) {
             return j.point;

@@ -130,40 +130,233 @@ impl<'a> PolygonPieces<'a> {
         }
     }
 
-    /// The φ-range whose normal is the unit vector `m`: a point on a corner, a whole edge.
-    pub fn phi_range_of_normal(&self, m: Vector) -> (f64, f64) {
+    /// The corner whose normal cone [e_{i−1}, e_i] holds the unit vector `m` (up to rounding,
+    /// which the callers allow for by looking at its neighbours): bisection on the angles of
+    /// the edge normals from e_{n−1}, increasing in i because the polygon is convex and
+    /// counter-clockwise. O(log n): a scan of every corner made each evaluation of a query on a
+    /// large polygon cost O(n) (issue 32: 2 s for a cast of a 100,000-gon).
+    fn corner_of(&self, m: Vector) -> usize {
+        let e = self.edge_normals;
+        let n = e.len();
+        let base = e[n - 1];
+        let a = ccw_angle(base, m);
+        let (mut lo, mut hi) = (0, n - 1);
+        while lo < hi {
+            let mid = lo + (hi - lo) / 2;
+            if ccw_angle(base, e[mid]) < a {
+                lo = mid + 1;
+            } else {
+                hi = mid;
+            }
+        }
+        lo
+    }
+
+    /// The corners to look at for `m`, in increasing order (up to [`WINDOW`] + 2 distinct): the
+    /// one [`PolygonPieces::corner_of`] finds and its neighbours within two, and the first and
+    /// last corners (where the scans of the circle wrap).
+    fn window(&self, m: Vector) -> ([usize; WINDOW + 2], usize) {
+        let n = self.vertices.len();
+        let i = self.corner_of(m);
+        let mut w = [0usize; WINDOW + 2];
+        for (k, slot) in w.iter_mut().enumerate().take(WINDOW) {
+            *slot = (i + n + k - WINDOW / 2) % n;
+        }
+        w[WINDOW] = 0;
+        w[WINDOW + 1] = n - 1;
+        w.sort_unstable();
+        let mut len = 0;
+        for k in 0..w.len() {
+            if len == 0 || w[k] != w[len - 1] {
+                w[len] = w[k];
+                len += 1;
+            }
+        }
+        (w, len)
+    }
+
+    /// What the scan over the corners in [`PolygonPieces::phi_range_of_normal`] answers at
+    /// corner `i` for the unit vector `m`, if it stops there.
+    fn range_at(&self, i: usize, m: Vector) -> Option<(f64, f64)> {
         let n = self.vertices.len();
         // Corner i covers normals from e_{i-1} (exclusive) to e_i (inclusive as edge i).
         let edge_range = |i: usize| (self.piece_starts[2 * i + 1], self.piece_starts[2 * i + 2]);
-        for i in 0..n {
-            let e_prev = self.edge_normals[(i + n - 1) % n];
-            let e = self.edge_normals[i];
-            let span = ccw_angle(e_prev, e);
-            let a = ccw_angle(e_prev, m);
-            if a == 0.0 || (m - e_prev).length_squared() < SAME_NORMAL_SQ {
-                return edge_range((i + n - 1) % n);
-            }
-            if a < span {
-                let phi = self.piece_starts[2 * i] + a * self.scalars.k * self.scalars.corner_scale;
-                return (phi, phi);
-            }
-            if a == span || (m - e).length_squared() < SAME_NORMAL_SQ {
-                return edge_range(i);
-            }
+        let e_prev = self.edge_normals[(i + n - 1) % n];
+        let e = self.edge_normals[i];
+        let span = ccw_angle(e_prev, e);
+        let a = ccw_angle(e_prev, m);
+        if a == 0.0 || (m - e_prev).length_squared() < SAME_NORMAL_SQ {
+            return Some(edge_range((i + n - 1) % n));
         }
-        // Only reachable through rounding: the normal sits on edge n−1's boundary.
-        edge_range(n - 1)
+        if a < span {
+            let phi = self.piece_starts[2 * i] + a * self.scalars.k * self.scalars.corner_scale;
+            return Some((phi, phi));
+        }
+        if a == span || (m - e).length_squared() < SAME_NORMAL_SQ {
+            return Some(edge_range(i));
+        }
+        None
+    }
+
+    /// The φ-range whose normal is the unit vector `m`: a point on a corner, a whole edge.
+    ///
+    /// The answer of a scan of the corners in order (the first that holds m): for more than
+    /// [`SCAN_UP_TO`] vertices taken on the corners around the one bisection finds, O(log n)
+    /// (the scan itself remains for what rounding could leave outside that window).
+    pub fn phi_range_of_normal(&self, m: Vector) -> (f64, f64) {
+        let n = self.vertices.len();
+        // Small polygons, and directions that are not unit vectors (0, NaN: outside the contract,
+        // where the angles the bisection compares are those of signed zeros), are scanned.
+        let found = if n <= SCAN_UP_TO || !(0.5..2.0).contains(&m.length_squared()) {
+            None
+        } else {
+            let (w, len) = self.window(m);
+            w[..len].iter().find_map(|&i| self.range_at(i, m))
+        };
+        found
+            .or_else(|| (0..n).find_map(|i| self.range_at(i, m)))
+            // Only reachable through rounding: the normal sits on edge n−1's boundary.
+            .unwrap_or((self.piece_starts[2 * n - 1], self.piece_starts[2 * n]))
+    }
+
+    /// [`PolygonPieces::phi_range_of_normal`] through the window at any size (for the tests).
+    #[cfg(test)]
+    fn phi_range_windowed(&self, m: Vector) -> Option<(f64, f64)> {
+        let (w, len) = self.window(m);
+        w[..len].iter().find_map(|&i| self.range_at(i, m))
     }
 
     /// The support point in direction `m` (any length; zero is read as +x).
+    ///
+    /// The core vertex furthest along m (the last of equals in index order, as a scan keeps
+    /// them): for more than [`SCAN_UP_TO`] vertices among the corners around the one whose cone
+    /// holds m, O(log n).
     pub fn support_point(&self, m: Vector) -> Vector {
         let m = m.normalize_or(Vector::X);
-        let best = self
+        let best = if self.vertices.len() <= SCAN_UP_TO {
+            self.vertices
+                .iter()
+                .copied()
+                .max_by(|a, b| a.dot(m).total_cmp(&b.dot(m)))
+                .unwrap_or(Vector::ZERO)
+        } else {
+            self.support_windowed(m)
+        };
+        best + m * self.radius
+    }
+
+    /// The core vertex furthest along the unit vector `m` among the window's corners.
+    fn support_windowed(&self, m: Vector) -> Vector {
+        let (w, len) = self.window(m);
+        let mut best = self.vertices[w[0]];
+        for &i in &w[1..len] {
+            let v = self.vertices[i];
+            if v.dot(m).total_cmp(&best.dot(m)).is_ge() {
+                best = v;
+            }
+        }
+        best
+    }
+}
+
+/// Corners around the bisection's [`PolygonPieces::window`] looks at.
+const WINDOW: usize = 5;
+/// Polygons of up to this many vertices are scanned rather than bisected (the bisection takes
+/// an arctangent per halving: slower than a scan of a few dot products; the answers are the
+/// same to the bit).
+const SCAN_UP_TO: usize = 16;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::numerics::math::unit;
+    use crate::{ConvexCurve, RoundedPolygon};
+
+    /// The scans [`PolygonPieces::phi_range_of_normal`] and [`PolygonPieces::support_point`]
+    /// replaced (issue 32).
+    fn scanned(p: &PolygonPieces, m: Vector) -> ((f64, f64), Vector) {
+        let n = p.vertices.len();
+        let range = (0..n)
+            .find_map(|i| p.range_at(i, m))
+            .unwrap_or((p.piece_starts[2 * n - 1], p.piece_starts[2 * n]));
+        let u = m.normalize_or(Vector::X);
+        let best = p
             .vertices
             .iter()
             .copied()
-            .max_by(|a, b| a.dot(m).total_cmp(&b.dot(m)))
+            .max_by(|a, b| a.dot(u).total_cmp(&b.dot(u)))
             .unwrap_or(Vector::ZERO);
-        best + m * self.radius
+        (range, best + u * p.radius)
+    }
+
+    /// The windows around the bisection answer as the scans do, to the bit: segments,
+    /// triangles, squares, irregular polygons and a 1,000-gon, at random directions, at every
+    /// edge normal and vertex direction exactly, and a rounding off them.
+    #[test]
+    fn bisection_answers_as_the_scan_of_every_corner() {
+        let mut seed = 7u64;
+        let mut next = move || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut polygons = vec![
+            RoundedPolygon::from_core_unchecked(vec![Vector::new(-1.0, 0.2), Vector::new(0.7, -0.1)], 0.1),
+            RoundedPolygon::regular(3, 1.0, 0.0),
+            RoundedPolygon::regular(4, 1.0, 0.2),
+            RoundedPolygon::regular(1000, 2.0, 0.01),
+        ];
+        for _ in 0..40 {
+            let n = 3 + (next() * 30.0) as usize;
+            let mut a: Vec<f64> = (0..n).map(|_| next() * core::f64::consts::TAU).collect();
+            a.sort_by(f64::total_cmp);
+            let v: Vec<Vector> = a.iter().map(|&t| Vector::new(t.cos(), 0.3 * t.sin())).collect();
+            if let Ok(p) = RoundedPolygon::try_new(&v, 0.1 * next()) {
+                polygons.push(p);
+            }
+        }
+        let mut checked = 0;
+        for p in &polygons {
+            let pieces = p.pieces_for_tests();
+            let mut dirs: Vec<Vector> = (0..200).map(|_| unit(next() * 7.0 - 3.5)).collect();
+            for &e in p.edge_normals() {
+                dirs.extend([e, -e, unit(e.y.atan2(e.x) + 1e-16), unit(e.y.atan2(e.x) - 1e-15)]);
+            }
+            for &v in p.vertices() {
+                dirs.push(v.normalize_or(Vector::X));
+            }
+            for m in dirs {
+                let (range, support) = scanned(&pieces, m);
+                // The windows themselves, at every size (the small polygons' queries scan).
+                let windowed = pieces.phi_range_windowed(m).expect("the window holds m");
+                let u = m.normalize_or(Vector::X);
+                let got = (windowed, pieces.support_windowed(u) + u * pieces.radius);
+                assert_eq!(got.0 .0.to_bits(), range.0.to_bits(), "{p:?} {m}");
+                assert_eq!(got.0 .1.to_bits(), range.1.to_bits(), "{p:?} {m}");
+                assert_eq!(got.1, support, "{p:?} {m}");
+                // The queries themselves, also at directions outside their contract (zero,
+                // scaled, NaN, infinite): the scan's answers.
+                for d in [
+                    m,
+                    m * 1e300,
+                    m * 1e-300,
+                    m * 3.0,
+                    Vector::ZERO,
+                    -Vector::ZERO,
+                    Vector::new(f64::NAN, 1.0),
+                ] {
+                    let (range, support) = scanned(&pieces, d);
+                    let got = pieces.phi_range_of_normal(d);
+                    assert_eq!(
+                        (got.0.to_bits(), got.1.to_bits()),
+                        (range.0.to_bits(), range.1.to_bits()),
+                        "{d}"
+                    );
+                    assert_eq!(pieces.support_point(d), support, "{d}");
+                }
+                checked += 1;
+            }
+        }
+        assert!(checked > 10_000, "{checked}");
+        let _ = ConvexCurve::bounding_radius(&polygons[0]);
     }
 }

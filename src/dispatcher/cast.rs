@@ -21,6 +21,7 @@ use crate::query::contact::SupportShape;
 use crate::query::gap::{gap_distance, gap_time_of_impact, gap_time_to_level};
 use crate::query::halfspace::{halfspace_distance, time_of_impact_halfspace};
 use crate::query::path::OnPath;
+use crate::query::time_scale::rescaled;
 use crate::query::toi::{bounding_circles_part, TimeOfImpact, ToiOptions};
 use parry2d_f64::query::{NonlinearRigidMotion, ShapeCastHit, Unsupported};
 use parry2d_f64::shape::{HalfSpace, Shape};
@@ -129,6 +130,59 @@ pub fn shape_time_of_impact(
 impl SmoothDispatcher {
     /// The nonlinear cast (module docs).
     pub(crate) fn nonlinear_cast(&self, c: &NonlinearCast) -> Result<Option<ShapeCastHit>, Unsupported> {
+        if self.cast_policy == CastPolicy::Rapier {
+            // rapier's rules place points in the world frame (a body's core): the pair at the
+            // origin, and rates far outside the normal range on a time scale where they are
+            // about 1 (`query::time_scale`), so that neither the place nor the time scale of
+            // the world changes an answer.
+            if let Some(answer) = self.rapier_cast_rebased(c) {
+                return answer;
+            }
+        }
+        self.nonlinear_cast_here(c)
+    }
+
+    /// [`Self::nonlinear_cast`] with the pair moved to the origin and its time rescaled, when
+    /// either changes anything; `None` when neither does (or the input is not finite: the
+    /// routes report it).
+    fn rapier_cast_rebased(&self, c: &NonlinearCast) -> Option<Result<Option<ShapeCastHit>, Unsupported>> {
+        if !(motion_is_finite(c.m1) && motion_is_finite(c.m2) && c.t0.is_finite() && c.t1.is_finite()) {
+            return None;
+        }
+        let size = super::parry_fallback::pair_size(c.g1, c.g2);
+        let scaled = rescaled(c.m1, c.m2, c.t0, c.t1, size);
+        let (m1, m2, t0, t1, scale) = match &scaled {
+            Some(r) => (r.m1, r.m2, r.t0, r.t1, r.scale),
+            None => (*c.m1, *c.m2, c.t0, c.t1, 1.0),
+        };
+        // Body 2's start at the origin (exactly: x₂ − x₂), body 1's start by the same shift.
+        let shift = m2.start.translation;
+        let far = shift.length() > size;
+        if !far && scaled.is_none() {
+            return None;
+        }
+        let moved = |m: NonlinearRigidMotion| NonlinearRigidMotion {
+            start: Pose::from_parts(m.start.translation - shift, m.start.rotation),
+            ..m
+        };
+        let (m1, m2) = if far { (moved(m1), moved(m2)) } else { (m1, m2) };
+        let inner = NonlinearCast {
+            m1: &m1,
+            m2: &m2,
+            t0,
+            t1,
+            ..*c
+        };
+        Some(self.nonlinear_cast_here(&inner).map(|h| {
+            h.map(|mut h| {
+                h.time_of_impact *= scale;
+                h
+            })
+        }))
+    }
+
+    /// The nonlinear cast of `c` as it is (module docs).
+    fn nonlinear_cast_here(&self, c: &NonlinearCast) -> Result<Option<ShapeCastHit>, Unsupported> {
         let rapier = self.cast_policy == CastPolicy::Rapier;
         let mut opts = ToiOptions {
             stop_at_penetration: c.stop,
@@ -392,7 +446,9 @@ fn plain(opts: &ToiOptions) -> ToiOptions {
 
 /// Shape 2's pose in shape 1's frame at time `t`.
 pub(crate) fn pos12_at(m1: &NonlinearRigidMotion, m2: &NonlinearRigidMotion, t: Real) -> Pose {
-    m1.position_at_time(t).inv_mul(&m2.position_at_time(t))
+    // From the pair's relative motion, as the trackers place it: the world poses of two bodies
+    // 1e15 from the origin carry 0.1 of rounding each.
+    crate::numerics::motion::PairFrame::at_time(m1, m2, t).pos12()
 }
 
 /// Whether `[t0, t1]` is a non-empty finite window (false for NaN).

@@ -96,11 +96,14 @@ fn far_apart(pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape, margin: Real) -> bool
     spheres_apart(pos12, g1, g2, margin)
 }
 
-/// True when the bounding circles of two bounded shapes are further apart than `margin`.
+/// True when the bounding circles of two bounded shapes are further apart than `margin`. Never
+/// for a non-finite pose (whose distance ∞ would read as apart: it goes on to the checks that
+/// refuse it, issue 32); an infinite distance from a finite pose (an overflow) is apart.
 fn spheres_apart(pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape, margin: Real) -> bool {
     let b1 = g1.compute_local_bounding_sphere();
     let b2 = g2.compute_bounding_sphere(pos12);
-    (b2.center - b1.center).length() - b1.radius - b2.radius > margin
+    let gap = (b2.center - b1.center).length() - b1.radius - b2.radius;
+    gap > margin && (gap.is_finite() || pos12.is_finite())
 }
 
 /// Two contacts of a curve resting a flat piece on a half-space, in the curve's frame:
@@ -313,6 +316,28 @@ fn refused<M, C: Default + Copy>(manifolds: &mut [ContactManifold<M, C>]) -> Res
 }
 
 impl SmoothDispatcher {
+    /// The manifolds of a pair with a composite shape: parry's helpers with this dispatcher, for
+    /// a finite pose (with a non-finite one parry's helpers would prune every part as apart:
+    /// issue 32). Out of line: the convex pairs' path stays as short as it was.
+    #[inline(never)]
+    fn composite_pair_manifolds<M, C>(
+        &self,
+        pos12: &Pose,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+        prediction: Real,
+        manifolds: &mut Vec<ContactManifold<M, C>>,
+        workspace: &mut Option<ContactManifoldsWorkspace>,
+    ) -> Result<(), Unsupported>
+    where
+        M: Default + Clone + Send + Sync,
+        C: Default + Copy + Send + Sync,
+    {
+        guarded(manifolds, pos12.is_finite())?;
+        composite_manifolds(self, pos12, g1, g2, prediction, manifolds, workspace);
+        Ok(())
+    }
+
     /// The exact contact query's manifold of an unconstrained convex pair whose two shapes it
     /// reads ([`support_shape`]: one of this crate's, no half-space, no user's curve), each shape
     /// read once: bounding circles apart, no point; else the exact contact from the previous
@@ -389,8 +414,7 @@ where
         }
         let (t1, t2) = (g1.shape_type(), g2.shape_type());
         if is_composite_like(g1, t1) || is_composite_like(g2, t2) {
-            composite_manifolds(self, pos12, g1, g2, prediction, manifolds, workspace);
-            return Ok(());
+            return self.composite_pair_manifolds(pos12, g1, g2, prediction, manifolds, workspace);
         }
         if t1 != ShapeType::Custom && t2 != ShapeType::Custom {
             // The commonest pairs (box–box, disc–disc, disc–convex): parry's answer without its dispatch.

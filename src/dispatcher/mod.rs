@@ -183,6 +183,8 @@ impl SmoothDispatcher {
     pub(crate) fn far_apart(pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape, margin: Real) -> bool {
         let b1 = g1.compute_local_bounding_sphere();
         let b2 = g2.compute_bounding_sphere(pos12);
-        (b2.center - b1.center).length() - b1.radius - b2.radius > margin
+        let gap = (b2.center - b1.center).length() - b1.radius - b2.radius;
+        // Never for a non-finite pose, whose distance ∞ would read as apart (issue 32).
+        gap > margin && (gap.is_finite() || pos12.is_finite())
     }
 }

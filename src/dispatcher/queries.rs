@@ -43,6 +43,10 @@ impl QueryDispatcher for SmoothDispatcher {
         g1: &dyn Shape,
         g2: &dyn Shape,
     ) -> Result<ShapeIntersection, Unsupported> {
+        if !pos12.is_finite() {
+            // Before the bounding-circle rejection, which takes an infinite distance as apart.
+            return Err(Unsupported);
+        }
         match route(g1, g2, &mut RouteScratch::default()) {
             // The gap tracker's exact distance for pairs with no strictly convex side.
             Route::Gap { c1, c2 } => match gap_pair_distance(&c1, &c2, pos12) {
@@ -66,6 +70,9 @@ impl QueryDispatcher for SmoothDispatcher {
     }
 
     fn distance(&self, pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape) -> Result<ShapeDistance, Unsupported> {
+        if !pos12.is_finite() {
+            return Err(Unsupported);
+        }
         match route(g1, g2, &mut RouteScratch::default()) {
             // The gap tracker's exact distance for pairs with no strictly convex side.
             Route::Gap { c1, c2 } => match gap_pair_distance(&c1, &c2, pos12) {
@@ -90,8 +97,9 @@ impl QueryDispatcher for SmoothDispatcher {
         g2: &dyn Shape,
         prediction: Real,
     ) -> Result<Option<Contact>, Unsupported> {
-        if prediction.is_nan() || prediction < 0.0 {
-            // parry's contract (its composite helpers assert it): no negative or NaN margin.
+        if prediction.is_nan() || prediction < 0.0 || !pos12.is_finite() {
+            // parry's contract (its composite helpers assert it): no negative or NaN margin; and
+            // no non-finite pose (the bounding-circle rejection takes ±∞ as apart).
             return Err(Unsupported);
         }
         // The exact contact query where it applies (this crate's shapes with polygons, discs,
@@ -150,8 +158,9 @@ impl QueryDispatcher for SmoothDispatcher {
         g2: &dyn Shape,
         max_dist: Real,
     ) -> Result<ClosestPoints, Unsupported> {
-        if max_dist.is_nan() || max_dist < 0.0 {
-            // parry's contract (it asserts it for balls and half-spaces): no negative or NaN margin.
+        if max_dist.is_nan() || max_dist < 0.0 || !pos12.is_finite() {
+            // parry's contract (it asserts it for balls and half-spaces): no negative or NaN
+            // margin; and no non-finite pose (the bounding-circle rejection takes ±∞ as apart).
             return Err(Unsupported);
         }
         match route(g1, g2, &mut RouteScratch::default()) {

@@ -181,7 +181,7 @@ pub(crate) fn rapier_path(c: &NonlinearCast, opts: &ToiOptions) -> ToiOptions {
 /// The exact contact of the cast's shapes at its start, or `None` when the contact query does
 /// not read the pair.
 pub(crate) fn start_contact(c: &NonlinearCast) -> Option<Contact> {
-    let pos12 = c.m1.position_at_time(c.t0).inv_mul(&c.m2.position_at_time(c.t0));
+    let pos12 = super::cast::pos12_at(c.m1, c.m2, c.t0);
     exact_contact(&pos12, c.g1, c.g2, None)
 }
 
@@ -316,7 +316,7 @@ pub(crate) fn start_contact_answer(
 /// each shape's frame), or the start's distance `d0` and no witnesses when the contact query
 /// does not read the pair.
 fn hit_at(c: &NonlinearCast, t: Real, d0: Real) -> TimeOfImpact {
-    let pos12 = c.m1.position_at_time(t).inv_mul(&c.m2.position_at_time(t));
+    let pos12 = super::cast::pos12_at(c.m1, c.m2, t);
     let k = exact_contact(&pos12, c.g1, c.g2, None);
     let (distance, point1, point2, normal1) = match &k {
         Some(k) => (

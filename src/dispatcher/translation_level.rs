@@ -140,7 +140,8 @@ fn descend(
             return LevelTime::Never;
         }
         let next = t + gap / -rate;
-        if !(next <= t1) {
+        // Past the window (or not a number): no crossing within it.
+        if next > t1 || next.is_nan() {
             return LevelTime::Never;
         }
         if next <= t {
@@ -200,12 +201,13 @@ mod tests {
     /// distance on each side of it.
     #[test]
     fn first_crossing_agrees_with_dense_sampling_of_parrys_distance() {
-        let cases: Vec<(
+        type Case = (
             Box<dyn Shape>,
             Box<dyn Shape>,
             NonlinearRigidMotion,
             NonlinearRigidMotion,
-        )> = vec![
+        );
+        let cases: Vec<Case> = vec![
             (
                 Box::new(Ellipse::new(0.4, 0.05)),
                 Box::new(Cuboid::new(Vector::new(1.0, 1.0))),

@@ -51,6 +51,19 @@ pub(crate) fn unit_or_x(d: Vector) -> Vector {
     s / s.length()
 }
 
+/// `d / |d|` as glam's `normalize` computes it when |d| is a normal number, otherwise
+/// [`unit_or_x`]: a direction between points up to about 1e154 apart keeps its bits, and one
+/// between points farther apart (|d|² overflows, `normalize` gives 0) or nearer (it underflows)
+/// is still a unit vector (issue 32: an axis of 0 made shapes 1e155 apart touch).
+#[inline]
+pub(crate) fn direction(d: Vector) -> Vector {
+    if d.length().is_normal() {
+        d.normalize()
+    } else {
+        unit_or_x(d)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -65,5 +78,16 @@ mod tests {
         let h = unit_or_x(Vector::new(3e307, 4e307));
         assert!((h - Vector::new(0.6, 0.8)).length() < 1e-15);
         assert!((unit_or_x(unit(0.3) * 7.0) - unit(0.3)).length() < 1e-15);
+    }
+
+    #[test]
+    fn direction_is_normalize_in_range_and_unit_beyond() {
+        let v = Vector::new(0.3, -2.7);
+        assert_eq!(direction(v), v.normalize());
+        for s in [1e-200, 1e155, 1e300] {
+            let u = direction(Vector::new(3.0, 4.0) * s);
+            assert!((u - Vector::new(0.6, 0.8)).length() < 1e-15, "{s}: {u}");
+        }
+        assert_eq!(direction(Vector::ZERO), Vector::X);
     }
 }

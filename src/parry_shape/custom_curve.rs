@@ -1,7 +1,7 @@
 //! parry's traits for [`CustomCurve`], generically from the wrapped curve.
 
 use super::features::curve_feature;
-use super::mass::curve_mass;
+use super::mass::mass_from_moments;
 use super::projection::{project_on_curve, project_on_curve_with_feature};
 use super::ray::piecewise_ray;
 use super::{aabb_ccd_thickness, curve_aabb};
@@ -65,13 +65,13 @@ impl Shape for CustomCurve {
     }
 
     fn mass_properties(&self, density: Real) -> MassProperties {
-        curve_mass(self.curve(), density)
+        mass_from_moments(density, self.moments())
     }
 
     fn ccd_thickness(&self) -> Real {
         // The inradius about the centroid (module docs of `core`): the distance from the
         // centroid to the curve, by projection (the box's half-width where that fails).
-        let c = curve_mass(self.curve(), 1.0).local_com;
+        let c = self.mass_properties(1.0).local_com;
         let p = self.project_local_point(c, false);
         let d = (p.point - c).length();
         if p.is_inside && d.is_finite() && d > 0.0 {

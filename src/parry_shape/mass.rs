@@ -1,6 +1,9 @@
 //! Exact mass properties (module docs of `parry_shape`): closed forms for the rounded polygon
 //! and the capsule-ellipse, adaptive Gauss–Legendre quadrature of Green's theorem for any curve.
 
+// The negated comparison (`!(area < chord)`) is deliberate: it is true for NaN.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
 use crate::curve::pieces::piece_bounds;
 use crate::curve::ConvexCurve;
 use crate::numerics::angle::ccw_angle;
@@ -12,12 +15,53 @@ use parry2d_f64::mass_properties::MassProperties;
 /// The quadrature of the moments is refined until each is within this fraction of the size's
 /// power (area r², first moments r³, polar moment r⁴) …
 const MOMENT_TOLERANCE: f64 = 1e-14;
-/// … or this many halvings deep.
+/// … or this many halvings deep …
 const MAX_DEPTH: u32 = 30;
+/// … or when the evaluations reach this many, plus [`EVALUATIONS_PER_PIECE`] per piece (then
+/// every panel not yet refined keeps its 12-point estimate, and the quadrature says it was
+/// capped: [`QuadratureStatus::OutOfEvaluations`]). A curve that converges takes a few hundred
+/// per piece; one whose `eval` is noisy (computed in f32, or with a relative noise of 1e-13)
+/// never converges, and without this cap refined every panel to `MAX_DEPTH` (2³⁰ panels per
+/// piece: issue 32). About 5 ms of a curve as costly as an ellipse.
+const BASE_EVALUATIONS: usize = 1 << 17;
+/// The evaluations a piece adds to [`BASE_EVALUATIONS`] (a curve of many pieces, a wrapped
+/// polygon, needs 36 per piece at least).
+const EVALUATIONS_PER_PIECE: usize = 256;
 /// A smooth curve (no breakpoints) is integrated in this many equal pieces of φ.
 const SMOOTH_PIECES: usize = 8;
+/// Evaluations of one refinement (two panels of [`gauss_legendre`]'s 12 nodes, and the point at
+/// the middle) …
+const REFINEMENT: usize = 25;
+/// … and of a piece's first panel (its 12 nodes and both ends).
+const ROOT_PANEL: usize = 14;
+/// The chord test allows the area this many times |P(a)|·|P(b)| below the chord's: the rounding
+/// of the cross product (64 ε), which where the chord is short and far from the origin (a
+/// flat side) exceeds the tolerance's share of the panel.
+const CHORD_ROUNDING: f64 = 64.0 * f64::EPSILON;
 
 pub(crate) type Moments = [f64; 4];
+
+/// Whether the quadrature of a curve's mass properties met its tolerance.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub enum QuadratureStatus {
+    /// Every moment is within 1e-14 of the size's power (r², r³, r⁴, r the bounding radius), as
+    /// the 12-point Gauss–Legendre estimates of halved panels agree.
+    Converged,
+    /// The evaluation budget (2¹⁷ plus 256 per piece) ran out first: the moments are the
+    /// estimates reached, as accurate as the curve's `eval` allows (a curve computed in f32:
+    /// about 1e-7 of the size's power).
+    OutOfEvaluations,
+}
+
+/// How the mass properties of a [`crate::CustomCurve`] were integrated (once, when it was
+/// wrapped): Green's theorem by adaptive Gauss–Legendre quadrature over each piece.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub struct MassQuadrature {
+    /// Whether it met its tolerance.
+    pub status: QuadratureStatus,
+    /// The curve's evaluations it took.
+    pub evaluations: usize,
+}
 
 /// Gauss–Legendre estimate of ∫ [½ c, ⅓ x c, ⅓ y c, ¼ |P|² c] dφ over [a, b], c = P × P′.
 fn gl_moments(c: &dyn ConvexCurve, a: f64, b: f64, nodes: &([f64; 12], [f64; 12])) -> Moments {
@@ -35,61 +79,148 @@ fn gl_moments(c: &dyn ConvexCurve, a: f64, b: f64, nodes: &([f64; 12], [f64; 12]
     acc.map(|v| v * half)
 }
 
-fn adaptive_moments(
-    c: &dyn ConvexCurve,
-    a: f64,
-    b: f64,
+/// A panel [a, b] of the adaptive quadrature (with the points at its ends), its 12-point
+/// estimate `whole`, the halvings left, and once decided either its two halves (indices of the
+/// arena) or its value.
+#[derive(Copy, Clone)]
+struct Panel {
+    a: (f64, Vector),
+    b: (f64, Vector),
     whole: Moments,
-    tol: &Moments,
     depth: u32,
-    nodes: &([f64; 12], [f64; 12]),
-) -> Moments {
-    let m = 0.5 * (a + b);
-    let left = gl_moments(c, a, m, nodes);
-    let right = gl_moments(c, m, b, nodes);
-    let sum = [0, 1, 2, 3].map(|k| left[k] + right[k]);
-    let frac = (b - a) / (2.0 * PI);
-    let ok = (0..4).all(|k| {
-        let err = (sum[k] - whole[k]).abs();
-        err <= tol[k] * frac || err.is_nan()
-    });
-    if ok || depth == 0 {
-        return sum;
-    }
-    let l = adaptive_moments(c, a, m, left, tol, depth - 1, nodes);
-    let r = adaptive_moments(c, m, b, right, tol, depth - 1, nodes);
-    [0, 1, 2, 3].map(|k| l[k] + r[k])
+    halves: Option<(usize, usize)>,
+    value: Moments,
 }
 
 /// Area, first moments and polar second moment (about the origin) of the region bounded by a
-/// convex curve, by adaptive Gauss–Legendre quadrature of Green's theorem over each piece.
-pub(crate) fn curve_moments(c: &dyn ConvexCurve) -> Moments {
-    let nodes = gauss_legendre::<12>();
+/// convex curve, by adaptive Gauss–Legendre quadrature of Green's theorem over each piece, with
+/// tolerances from `scale` (the curve's size) and a budget of evaluations.
+///
+/// A panel is accepted when its two halves' estimates agree with its own (to the tolerance's
+/// share of the interval) and each half's area is at least its chord's; otherwise both halves
+/// are panels. The chord test: the region swept from the origin over a convex arc holds the
+/// triangle of the origin and the arc's chord, so its area ½∫P × P′ is at least ½ P(a) × P(b)
+/// (less the rounding of that product, [`CHORD_ROUNDING`]). Halved estimates agree when all their nodes miss a
+/// narrow peak of the integrand — a thin ellipse in its normal angle packs its long flat side,
+/// and nearly all its area, into a φ-interval of about b/a — and only the chord sees what lies
+/// between them (without it the area of a 1:1e-9 ellipse "converged" to 1.6e-15 for 3.1e-9).
+///
+/// Panels are decided in the order they are made (breadth first, over all pieces at once), so
+/// that a budget that runs out leaves every region refined to about the same depth instead of
+/// one region to the last halving and the others not at all (depth first, a thin ellipse in its
+/// normal angle, whose area sits in φ-intervals of about b/a at its flat sides, spent the budget
+/// on the first of them and got a quarter of its area); each panel's value is then its halves'
+/// sum (as a recursion adds them: a query that converges keeps its bits), or, undecided, its own
+/// estimate.
+pub(crate) fn curve_quadrature(c: &dyn ConvexCurve, scale: f64) -> (Moments, MassQuadrature) {
     let bp = c.breakpoints();
-    let r = c.bounding_radius().abs().max(f64::MIN_POSITIVE);
-    let tol = [r * r, r * r * r, r * r * r, r * r * r * r].map(|s| MOMENT_TOLERANCE * s);
-    let mut total = [0.0; 4];
-    let mut add = |a: f64, b: f64| {
-        let whole = gl_moments(c, a, b, &nodes);
-        let m = adaptive_moments(c, a, b, whole, &tol, MAX_DEPTH, &nodes);
-        for k in 0..4 {
-            total[k] += m[k];
-        }
-    };
-    if bp.is_empty() {
-        for i in 0..SMOOTH_PIECES {
-            let a = -PI + 2.0 * PI * i as f64 / SMOOTH_PIECES as f64;
-            add(a, a + 2.0 * PI / SMOOTH_PIECES as f64);
-        }
+    let r = scale.abs().max(f64::MIN_POSITIVE);
+    let tol: Moments = [r * r, r * r * r, r * r * r, r * r * r * r].map(|s| MOMENT_TOLERANCE * s);
+    let nodes = gauss_legendre::<12>();
+    let pieces: Vec<(f64, f64)> = if bp.is_empty() {
+        (0..SMOOTH_PIECES)
+            .map(|i| {
+                let a = -PI + 2.0 * PI * i as f64 / SMOOTH_PIECES as f64;
+                (a, a + 2.0 * PI / SMOOTH_PIECES as f64)
+            })
+            .collect()
     } else {
-        for k in 0..bp.len() {
-            let (s, e) = piece_bounds(bp, k);
-            if e > s {
-                add(s, e);
+        (0..bp.len())
+            .map(|k| piece_bounds(bp, k))
+            .filter(|(s, e)| e > s)
+            .collect()
+    };
+    let budget = BASE_EVALUATIONS.saturating_add(EVALUATIONS_PER_PIECE.saturating_mul(pieces.len()));
+    let mut spent = 0usize;
+    let mut panels: Vec<Panel> = pieces
+        .iter()
+        .map(|&(a, b)| {
+            spent += ROOT_PANEL;
+            let whole = gl_moments(c, a, b, &nodes);
+            Panel {
+                a: (a, c.eval(a).point),
+                b: (b, c.eval(b).point),
+                whole,
+                depth: MAX_DEPTH,
+                halves: None,
+                value: whole,
             }
+        })
+        .collect();
+    let roots = panels.len();
+    let mut capped = false;
+    let mut i = 0;
+    while i < panels.len() {
+        let p = panels[i];
+        i += 1;
+        if spent.saturating_add(REFINEMENT) > budget {
+            capped = true;
+            break;
+        }
+        spent += REFINEMENT;
+        let (a, b) = (p.a.0, p.b.0);
+        let m = 0.5 * (a + b);
+        let pm = c.eval(m).point;
+        let left = gl_moments(c, a, m, &nodes);
+        let right = gl_moments(c, m, b, &nodes);
+        let sum = [0, 1, 2, 3].map(|k| left[k] + right[k]);
+        let frac = (b - a) / (2.0 * PI);
+        let ok = (0..4).all(|k| {
+            let err = (sum[k] - p.whole[k]).abs();
+            err <= tol[k] * frac || err.is_nan()
+        });
+        let chord = |area: f64, u: Vector, v: Vector| {
+            let c = 0.5 * cross(u, v);
+            !(area < c - tol[0] * frac - CHORD_ROUNDING * u.length() * v.length())
+        };
+        if (ok && chord(left[0], p.a.1, pm) && chord(right[0], pm, p.b.1)) || p.depth == 0 {
+            panels[i - 1].value = sum;
+            continue;
+        }
+        let half = |lo: (f64, Vector), hi: (f64, Vector), whole: Moments| Panel {
+            a: lo,
+            b: hi,
+            whole,
+            depth: p.depth - 1,
+            halves: None,
+            value: whole,
+        };
+        let n = panels.len();
+        panels[i - 1].halves = Some((n, n + 1));
+        panels.push(half(p.a, (m, pm), left));
+        panels.push(half((m, pm), p.b, right));
+    }
+    // Halves come after their panel: sum them from the last.
+    for k in (0..panels.len()).rev() {
+        if let Some((l, r)) = panels[k].halves {
+            let (l, r) = (panels[l].value, panels[r].value);
+            panels[k].value = [0, 1, 2, 3].map(|j| l[j] + r[j]);
         }
     }
-    total
+    let mut total = [0.0; 4];
+    for p in &panels[..roots] {
+        for (t, v) in total.iter_mut().zip(p.value) {
+            *t += v;
+        }
+    }
+    let status = if capped {
+        QuadratureStatus::OutOfEvaluations
+    } else {
+        QuadratureStatus::Converged
+    };
+    (
+        total,
+        MassQuadrature {
+            status,
+            evaluations: spent,
+        },
+    )
+}
+
+/// [`curve_quadrature`] with the curve's bounding radius as its size (the built-in shapes).
+#[cfg(test)]
+pub(crate) fn curve_moments(c: &dyn ConvexCurve) -> Moments {
+    curve_quadrature(c, c.bounding_radius()).0
 }
 
 /// parry mass properties from the moments (about the origin) of a uniform region.
@@ -101,10 +232,6 @@ pub(crate) fn mass_from_moments(density: Real, m: Moments) -> MassProperties {
     let com = Vector::new(m[1], m[2]) / area;
     let inertia = (m[3] - area * com.length_squared()).max(0.0);
     MassProperties::new(com, density * area, density * inertia)
-}
-
-pub(crate) fn curve_mass(c: &dyn ConvexCurve, density: Real) -> MassProperties {
-    mass_from_moments(density, curve_moments(c))
 }
 
 /// Adds the moments (about the origin) of the convex polygon `v` (counter-clockwise) to `acc`.
@@ -243,6 +370,42 @@ mod tests {
                     quad[k]
                 );
             }
+        }
+    }
+
+    /// Issue 32, item 1: the quadrature's tolerance came from the user's bounding radius (a
+    /// radius of 0 made it 0) and nothing capped its evaluations. At any scale — 0, NaN, a
+    /// fifth of the size, 1e-300 — it now ends within its budget, saying whether it converged;
+    /// and its area stays right where the scale is too small for it to converge.
+    #[test]
+    fn quadrature_ends_within_its_budget_at_any_scale() {
+        let e = Ellipse::new(0.6, 0.3);
+        for scale in [0.6, 0.12, 0.0, f64::NAN, 1e-300, -1.0] {
+            let (m, q) = curve_quadrature(&e, scale);
+            assert!(
+                q.evaluations <= BASE_EVALUATIONS + EVALUATIONS_PER_PIECE * SMOOTH_PIECES,
+                "{q:?}"
+            );
+            assert!(rel_close(m[0], PI * 0.18, 1e-13), "scale {scale}: area {}", m[0]);
+            if scale == 0.6 {
+                assert_eq!(q.status, QuadratureStatus::Converged);
+            }
+        }
+    }
+
+    /// A thin ellipse's area sits in φ-intervals of about b/a at its flat sides: a depth-first
+    /// refinement under a budget spent it on the first of them (a 1:1e-6 ellipse got a quarter
+    /// of its area); breadth first, the quadrature finds it to 1e-14 of the size squared.
+    #[test]
+    fn quadrature_finds_the_area_of_thin_ellipses() {
+        for (a, b) in [(1.0, 1e-3), (1.0, 1e-6), (1e-6, 1.0), (1.0, 1e-9)] {
+            let (m, q) = curve_quadrature(&Ellipse::new(a, b), a.max(b));
+            let exact = PI * a * b;
+            assert!(
+                (m[0] - exact).abs() <= 1e-14 * a.max(b).powi(2),
+                "{a} × {b}: {} vs {exact} ({q:?})",
+                m[0]
+            );
         }
     }
 }

@@ -40,7 +40,9 @@
 //!   (note that parry's own `RoundConvexPolygon` ignores the border radius in its mass); the
 //!   capsule-ellipse in closed form (half ellipse + rectangle + two quarter discs); custom curves
 //!   by adaptive Gauss–Legendre quadrature of Green's theorem over each piece between
-//!   breakpoints (area ½∮P×P′, first moment ⅓∮P (P×P′), polar moment ¼∮|P|²(P×P′)).
+//!   breakpoints (area ½∮P×P′, first moment ⅓∮P (P×P′), polar moment ¼∮|P|²(P×P′)), once, when
+//!   the curve is wrapped, within an evaluation budget ([`crate::MassQuadrature`] says whether it
+//!   converged).
 //! * **Ray casts**: closed form for the ellipse (scaled to the unit circle, stable quadratic).
 //!   The other shapes use an exact generic method: with u the unit ray direction and
 //!   m = (u_y, −u_x), f(φ) = (P(φ) − o) × u is monotone on each of the two arcs between the
@@ -72,6 +74,8 @@ mod rounded_polygon;
 pub(crate) use core::{capsule_ellipse_core, polygon_core, Core};
 pub use features::FLAT_FEATURE_MAX_ANGLE;
 pub(crate) use features::{face_id, vertex_id};
+pub(crate) use mass::{curve_quadrature, Moments};
+pub use mass::{MassQuadrature, QuadratureStatus};
 
 use crate::curve::ConvexCurve;
 use crate::numerics::math::{Real, Vector};

@@ -8,6 +8,7 @@ use crate::numerics::angle::{unwrap_after, wrap_phi};
 use crate::numerics::math::{cross, unit_or_x, Real, Vector};
 use crate::numerics::roots::solve_increasing;
 use crate::parry_shape::projection::curve_project;
+use core::f64::consts::{PI, TAU};
 use parry2d_f64::query::{Ray, RayIntersection};
 use parry2d_f64::shape::FeatureId;
 
@@ -31,6 +32,20 @@ fn ray_arc_root(c: &dyn ConvexCurve, m: Vector, c0: f64, a: f64, b: f64, sign: f
     (phi, c.eval(phi))
 }
 
+/// [`ConvexCurve::phi_range_of_normal`] kept to what its contract allows: an interval of φ
+/// within one turn starting in [−π, π]. A user's curve that answers otherwise (non-finite, or
+/// `(p, p + 1e17)`: issue 32) gets the one φ of its start, wrapped, so the arcs below stay
+/// within a turn (and `wrap_phi` of a non-finite start is 0).
+fn phi_range(c: &dyn ConvexCurve, n: Vector) -> (f64, f64) {
+    let (lo, hi) = c.phi_range_of_normal(n);
+    if lo.is_finite() && hi.is_finite() && lo <= hi && hi - lo <= TAU && (-PI..=PI).contains(&lo) {
+        (lo, hi)
+    } else {
+        let lo = if lo.is_finite() { wrap_phi(lo) } else { 0.0 };
+        (lo, lo)
+    }
+}
+
 /// Exact ray cast on a convex curve (see the module documentation).
 pub(crate) fn curve_ray(c: &dyn ConvexCurve, ray: &Ray, max_toi: Real, solid: bool) -> Option<CurveHit> {
     let (o, d) = (ray.origin, ray.dir);
@@ -52,8 +67,8 @@ pub(crate) fn curve_ray(c: &dyn ConvexCurve, ray: &Ray, max_toi: Real, solid: bo
     }
     let m = Vector::new(u.y, -u.x);
     let c0 = cross(o, u);
-    let (lo_m, hi_m) = c.phi_range_of_normal(m);
-    let (lo_n, hi_n) = c.phi_range_of_normal(-m);
+    let (lo_m, hi_m) = phi_range(c, m);
+    let (lo_n, hi_n) = phi_range(c, -m);
     // f is at its maximum at S(m) and its minimum at S(−m); the line misses the curve unless
     // f_max ≥ 0 ≥ f_min.
     let f_max = c.eval(lo_m).point.dot(m) - c0;
@@ -105,4 +120,45 @@ pub(crate) fn piecewise_ray(
     let hit = curve_ray(c, ray, max_time_of_impact, solid)?;
     let f = FeatureId::Face(piece_index(c.breakpoints(), hit.phi) as u32);
     Some(RayIntersection::new(hit.toi, hit.normal, f))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{CurvePoint, Ellipse};
+
+    /// An ellipse whose `phi_range_of_normal` answers (p, p + w).
+    #[derive(Debug)]
+    struct HugeRange(Ellipse, f64);
+    impl ConvexCurve for HugeRange {
+        fn eval(&self, phi: f64) -> CurvePoint {
+            self.0.eval(phi)
+        }
+        fn bounding_radius(&self) -> f64 {
+            self.0.bounding_radius()
+        }
+        fn phi_range_of_normal(&self, n: Vector) -> (f64, f64) {
+            let (lo, _) = self.0.phi_range_of_normal(n);
+            (lo, lo + self.1)
+        }
+    }
+
+    /// Issue 32, item 2: with such ranges the arcs between the support points were unwrapped
+    /// by a loop that never ended from 5.7e16 on. The ray cast keeps a user's range within one
+    /// turn: every ray ends, with the sound curve's answer where the lie does not matter (the
+    /// support points are the ranges' starts, which are right).
+    #[test]
+    fn ray_cast_ends_when_phi_range_of_normal_answers_a_huge_interval() {
+        let e = Ellipse::new(0.6, 0.3);
+        for w in [1e17, 5.7e16, 1e300, f64::INFINITY, f64::NAN, -1.0] {
+            let c = HugeRange(e, w);
+            for k in 0..32 {
+                let a = core::f64::consts::TAU * k as f64 / 32.0;
+                let d = crate::numerics::math::unit(a);
+                let ray = Ray::new(-d * 3.0 + crate::numerics::math::perp(d) * 0.1, d);
+                let (got, sound) = (curve_ray(&c, &ray, 10.0, true), curve_ray(&e, &ray, 10.0, true));
+                assert_eq!(got.map(|h| h.toi), sound.map(|h| h.toi), "width {w}, direction {a}");
+            }
+        }
+    }
 }

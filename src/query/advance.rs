@@ -494,9 +494,16 @@ fn first_crossing(
             // The first root of f + f′s − K s²/2 (the step that is safe for this piece), in the
             // form without cancellation: 2f/(√(f′² + 2Kf) − f′) when the piece comes down.
             let f = f.max(0.0);
-            let root = (df * df + 2.0 * kk * f).sqrt();
+            // √(f′² + 2Kf) as a hypotenuse, scaled: f′² alone underflows at 1e-160 m/s.
+            let (a, b) = (df.abs(), (2.0 * kk * f).sqrt());
+            let (hi, lo) = if a > b { (a, b) } else { (b, a) };
+            let root = if hi > 0.0 {
+                hi * (1.0 + (lo / hi) * (lo / hi)).sqrt()
+            } else {
+                0.0
+            };
             let s = if df < 0.0 {
-                2.0 * f / (root - df)
+                2.0 * f / (root + a)
             } else if kk > 0.0 {
                 (df + root) / kk
             } else {

@@ -24,13 +24,17 @@
 
 use crate::curve::ConvexCurve;
 use crate::error::{finite, QueryError};
-use crate::numerics::math::{perp, Pose, Vector};
-use crate::numerics::motion::motion_is_finite;
+use crate::numerics::math::{perp, unit_or_x, Pose, Vector};
+use crate::numerics::motion::{motion_is_finite, RelativeMotion};
 use crate::query::stationary::{DistanceStatus, StationaryDistance};
 use crate::query::stepping::CONTACT_FLOOR;
 use crate::query::toi::{TimeOfImpact, ToiCost, ToiOptions, ToiStatus};
 use parry2d_f64::query::NonlinearRigidMotion;
 use parry2d_f64::shape::HalfSpace;
+
+/// The half-space cast's guard takes its bound over a span whose rates times it stay below this
+/// (metres or radians): their squares stay within f64's range.
+const SPAN_REACH: f64 = 1e100;
 
 /// Signed distance between `curve` and the half-space `hs`; `pos12` is shape 2's pose in shape 1's
 /// frame and `curve_first` tells whether shape 1 is the curve. Results in the caller's order.
@@ -84,53 +88,44 @@ pub fn halfspace_distance(
     }))
 }
 
+/// The curve against the half-space at one time, in the half-space's frame (where the plane is
+/// fixed: normal n = `hs.normal` through the origin).
 struct Sample {
     t: f64,
     dist: f64,
     /// Support point in the curve's frame.
     p: Vector,
+    /// The support point in the half-space's frame.
+    x: Vector,
     /// dG/dt for the body-fixed point p.
     dg: f64,
     /// The smallest dG/dt over the whole shape.
     v_min: f64,
     /// Half-space normal in the curve's frame.
     n_c: Vector,
-    /// Plane point (the half-space origin) in the curve's frame.
-    o_c: Vector,
 }
 
-fn sample(
-    curve: &dyn ConvexCurve,
-    mc: &NonlinearRigidMotion,
-    hs: &HalfSpace,
-    mh: &NonlinearRigidMotion,
-    t: f64,
-) -> Sample {
-    let pc = mc.position_at_time(t);
-    let ph = mh.position_at_time(t);
-    let nw = ph.rotation.transform_vector(hs.normal);
-    let ow = ph.translation;
-    let n_c = pc.rotation.inverse_transform_vector(nw);
+/// The sample at time `t` of the curve moving by `rel` relative to the half-space (object1 the
+/// curve, object2 the half-space): everything in the half-space's frame, from the pair's
+/// relative placement, so that poses far from the world origin lose nothing (issue 32: in world
+/// coordinates a plane 1e15 from the origin put the hit 0.17·s inside it).
+///
+/// A body point p is at X = q + R(β)(p − c₁) (`PairFrame`), at the height G = n·X, moving at
+/// ∂G/∂t = n·q' + ω n·(R(p − c₁))⊥ = n·q' − ω (R(−β)n⊥)·(p − c₁), ω = ω_c − ω_h: affine in p,
+/// smallest at the support point along k = ω R(−β)n⊥.
+fn sample(curve: &dyn ConvexCurve, rel: &RelativeMotion, n: Vector, t: f64) -> Sample {
+    let fr = rel.frame(t);
+    let n_c = fr.unrotate(n);
     let p = curve.support_point(-n_c);
-    let x = pc.transform_point(p);
-    let dist = nw.dot(x - ow);
-    // Velocities of the material points.
-    let cc = pc.transform_point(mc.local_center);
-    let ch = ph.transform_point(mh.local_center);
-    let xv = mc.linvel + perp(x - cc) * mc.angvel;
-    let ov = mh.linvel + perp(ow - ch) * mh.angvel;
-    let nv = perp(nw) * mh.angvel;
-    let g_t = |x: Vector| {
-        let xv = mc.linvel + perp(x - cc) * mc.angvel;
-        nv.dot(x - ow) + nw.dot(xv - ov)
-    };
-    let dg = g_t(x);
-    let _ = xv;
-    // ∂G/∂t = k·x + const with k = (ω_h − ω_c)·n⊥: smallest at the support point along −k.
-    let k = perp(nw) * (mh.angvel - mc.angvel);
-    let v_min = if k.length_squared() > 0.0 {
-        let kc = pc.rotation.inverse_transform_vector(-k);
-        g_t(pc.transform_point(curve.support_point(kc)))
+    let r = fr.rotate(p - fr.center1);
+    let x = fr.q + r;
+    let dist = n.dot(x);
+    let base = n.dot(fr.q_t);
+    let g_t = |r: Vector| base + fr.omega * n.dot(perp(r));
+    let dg = g_t(r);
+    let v_min = if fr.omega != 0.0 {
+        let k = fr.unrotate(perp(n)) * fr.omega;
+        g_t(fr.rotate(curve.support_point(unit_or_x(k)) - fr.center1))
     } else {
         dg
     };
@@ -138,10 +133,10 @@ fn sample(
         t,
         dist,
         p,
+        x,
         dg,
         v_min: v_min.min(dg),
         n_c,
-        o_c: pc.inverse_transform_point(ow),
     }
 }
 
@@ -201,33 +196,31 @@ fn toi_halfspace(
     let tol = opts.distance_tolerance * size;
     let delta = opts.target_distance;
     let rc = size + mc.local_center.length();
+    let rel = RelativeMotion::new(mc, mh);
+    let n = hs.normal;
     let w_rel = mc.angvel - mh.angvel;
-    let dv = (mc.linvel - mh.linvel).length();
-    let c0 = mc.start.transform_point(mc.local_center) - mh.start.transform_point(mh.local_center);
-    let dcv = mc.linvel - mh.linvel;
-    let bound = |t: f64, h: f64| {
-        let dc = (c0 + dcv * t).length().max((c0 + dcv * (t + h)).length());
-        2.0 * mh.angvel.abs() * dv + mh.angvel * mh.angvel * dc + w_rel * w_rel * rc
+    let dcv = rel.center_velocity();
+    // |G''| ≤ |q''| + ω²r_c, |q''| ≤ ω_h²|ΔC| + 2|ω_h||ΔV| (ΔC affine in t: largest at an end),
+    // times span² (the bound on the span's own time scale: rates times the span, so that a
+    // spin of 1e-250 rad/s over 1e250 s is a turn, not a square that underflows to 0).
+    let bound_over = |t: f64, span: f64| {
+        let dc = rel.center_offset(t).length().max(rel.center_offset(t + span).length());
+        let (wh, wr, dv) = (mh.angvel * span, w_rel * span, (dcv * span).length());
+        2.0 * wh.abs() * dv + wh * wh * dc + wr * wr * rc
     };
     let mut cost = ToiCost::default();
-    let finish = |s: &Sample, status: ToiStatus, cost: ToiCost| {
-        let on_plane = s.p - s.n_c * s.dist;
-        let _ = s.o_c;
-        let ph = mh.position_at_time(s.t);
-        let pc = mc.position_at_time(s.t);
-        TimeOfImpact {
-            status,
-            time: s.t,
-            distance: s.dist,
-            distance_rate: s.dg,
-            point1: s.p,
-            point2: ph.inverse_transform_point(pc.transform_point(on_plane)),
-            normal1: -s.n_c,
-            normal2: hs.normal,
-            cost,
-        }
+    let finish = |s: &Sample, status: ToiStatus, cost: ToiCost| TimeOfImpact {
+        status,
+        time: s.t,
+        distance: s.dist,
+        distance_rate: s.dg,
+        point1: s.p,
+        point2: s.x - n * s.dist,
+        normal1: -s.n_c,
+        normal2: n,
+        cost,
     };
-    let mut s = sample(curve, mc, hs, mh, t0);
+    let mut s = sample(curve, &rel, n, t0);
     cost.evaluations += 1;
     if !(s.dist.is_finite() && s.dg.is_finite() && s.v_min.is_finite()) {
         return Err(QueryError::Degenerate);
@@ -242,7 +235,7 @@ fn toi_halfspace(
             if s.t >= t1 || cost.predictor_steps >= opts.max_steps {
                 return Ok(finish(&s, ToiStatus::NoHit, cost));
             }
-            s = sample(curve, mc, hs, mh, (s.t + h).min(t1));
+            s = sample(curve, &rel, n, (s.t + h).min(t1));
             cost.predictor_steps += 1;
             cost.evaluations += 1;
             if !(s.dist.is_finite() && s.dg.is_finite() && s.v_min.is_finite()) {
@@ -260,7 +253,7 @@ fn toi_halfspace(
             // One Newton step on D from the safe side, kept if it stays within the tolerances.
             if s.dg < 0.0 {
                 let tn = (s.t - gap / s.dg).min(t1);
-                let sn = sample(curve, mc, hs, mh, tn);
+                let sn = sample(curve, &rel, n, tn);
                 cost.evaluations += 1;
                 let g = sn.dist - delta;
                 if g >= -CONTACT_FLOOR * size && g <= tol {
@@ -276,15 +269,31 @@ fn toi_halfspace(
             return Ok(finish(&s, ToiStatus::OutOfIterations, cost));
         }
         let h_max = t1 - s.t;
-        let m = bound(s.t, h_max);
-        let v = s.v_min;
-        let h = if m > 0.0 {
+        // On the time scale of a span T (τ = (t − tₖ)/T ∈ [0, 1]): D ≥ gap + ṽτ − m̃τ²/2 with
+        // ṽ = V_min·T and m̃ = M·T². T is the window left, or less where a rate times it would
+        // pass SPAN_REACH (so that the squares stay finite).
+        let rate = s
+            .v_min
+            .abs()
+            .max(mh.angvel.abs())
+            .max(w_rel.abs())
+            .max(dcv.x.abs())
+            .max(dcv.y.abs());
+        let span = if rate * h_max > SPAN_REACH {
+            SPAN_REACH / rate
+        } else {
+            h_max
+        };
+        let m = bound_over(s.t, span);
+        let v = s.v_min * span;
+        let tau = if m > 0.0 {
             2.0 * gap / (-v + (v * v + 2.0 * m * gap).sqrt())
         } else if v < 0.0 {
             gap / -v
         } else {
-            h_max
+            1.0
         };
+        let h = tau.min(1.0) * span;
         if h < h_max && m > 0.0 {
             cost.guard_limited_steps += 1;
         }
@@ -292,7 +301,7 @@ fn toi_halfspace(
         if tn <= s.t {
             return Ok(finish(&s, ToiStatus::OutOfIterations, cost));
         }
-        s = sample(curve, mc, hs, mh, tn);
+        s = sample(curve, &rel, n, tn);
         cost.predictor_steps += 1;
         cost.evaluations += 1;
         if !(s.dist.is_finite() && s.dg.is_finite() && s.v_min.is_finite()) {

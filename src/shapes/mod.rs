@@ -3,6 +3,7 @@
 
 mod ball_curve;
 mod capsule_ellipse;
+mod curve_checks;
 mod custom_curve;
 mod ellipse;
 mod rounded_polygon;

@@ -17,7 +17,7 @@
 
 use crate::curve::polygon_pieces::{layout, LayoutScalars, PolygonPieces};
 use crate::curve::{ConvexCurve, CurvePoint};
-use crate::error::{non_negative, positive, ShapeError};
+use crate::error::{non_negative, positive, ShapeError, MAX_VERTICES};
 use crate::numerics::math::{cross, unit, Vector};
 use core::f64::consts::PI;
 
@@ -84,13 +84,16 @@ impl RoundedPolygon {
     }
 
     /// The convex counter-clockwise polygon `vertices` dilated by `corner_radius`, or why not:
-    /// fewer than three vertices, a non-finite vertex, a repeated vertex, a reflex, flat or
+    /// fewer than three vertices or more than [`crate::MAX_VERTICES`], a non-finite vertex, a repeated vertex, a reflex, flat or
     /// clockwise corner, a negative or non-finite radius, or a length outside
     /// [[`crate::MIN_LENGTH`], [`crate::MAX_LENGTH`]] ([`ShapeError::OutOfRange`]).
     pub fn try_new(vertices: &[Vector], corner_radius: f64) -> Result<Self, ShapeError> {
         let r = non_negative("corner_radius", corner_radius)?;
         if vertices.len() < 3 {
             return Err(ShapeError::TooFewVertices { count: vertices.len() });
+        }
+        if vertices.len() > MAX_VERTICES {
+            return Err(ShapeError::TooManyVertices { count: vertices.len() });
         }
         if let Some(index) = vertices.iter().position(|v| !v.is_finite()) {
             return Err(ShapeError::VertexNotFinite { index });
@@ -144,12 +147,19 @@ impl RoundedPolygon {
         }
     }
 
-    /// The regular polygon of [`RoundedPolygon::regular`], or why not.
+    /// The regular polygon of [`RoundedPolygon::regular`], or why not (as
+    /// [`RoundedPolygon::try_new`]; the count of sides is checked against
+    /// [`crate::MAX_VERTICES`] before anything is allocated).
     pub fn try_regular(sides: usize, circumradius: f64, corner_radius: f64) -> Result<Self, ShapeError> {
         let r = positive("circumradius", circumradius)?;
         non_negative("corner_radius", corner_radius)?;
         if sides < 3 {
             return Err(ShapeError::TooFewVertices { count: sides });
+        }
+        // Before allocating: `usize::MAX` sides overflowed the capacity (a panic), 2⁴⁰ asked for
+        // 17 TB (an abort).
+        if sides > MAX_VERTICES {
+            return Err(ShapeError::TooManyVertices { count: sides });
         }
         let v: Vec<Vector> = (0..sides)
             .map(|i| unit(2.0 * PI * i as f64 / sides as f64) * r)
@@ -192,6 +202,12 @@ impl RoundedPolygon {
             radius: self.radius,
             scalars: self.scalars,
         }
+    }
+
+    /// The shared piece layout, for the tests of `curve::polygon_pieces`.
+    #[cfg(test)]
+    pub(crate) fn pieces_for_tests(&self) -> PolygonPieces<'_> {
+        self.pieces()
     }
 
     /// The core polygon's vertices (counter-clockwise).

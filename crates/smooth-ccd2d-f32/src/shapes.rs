@@ -28,6 +28,20 @@ fn outward(b: &parry2d_f64::bounding_volume::Aabb) -> Aabb {
     )
 }
 
+/// An f64 inverse mass or inertia rounded to f32, or 0 where it overflows: the mass or inertia
+/// is then below f32's normal range (an inertia ∝ size⁴ of a shape of 1e-10, a mass of one of
+/// 1e-19), and an inverse of 0 is what parry2d reports for its own shapes whose mass or inertia
+/// rounds to 0 in f32 (a ball of 1e-12). Rounded as it was, ∞ made rapier2d's angular velocity
+/// NaN at the first step (issue 32).
+fn inverse32(inv: f64) -> f32 {
+    let r = inv as f32;
+    if r.is_finite() {
+        r
+    } else {
+        0.0
+    }
+}
+
 /// parry2d's traits for an f32 wrapper `$ty` of the f64 shape `$inner`, by delegation.
 macro_rules! delegate_to_f64 {
     ($ty:ident, $inner:ty) => {
@@ -128,8 +142,8 @@ macro_rules! delegate_to_f64 {
                 let m = s64::Shape::mass_properties(&self.0, density as f64);
                 MassProperties {
                     local_com: v32(m.local_com),
-                    inv_mass: m.inv_mass as f32,
-                    inv_principal_inertia: m.inv_principal_inertia as f32,
+                    inv_mass: inverse32(m.inv_mass),
+                    inv_principal_inertia: inverse32(m.inv_principal_inertia),
                 }
             }
 
@@ -217,6 +231,10 @@ impl RoundedPolygon {
 
     /// The rounded polygon, or why not ([`smooth_ccd2d::RoundedPolygon::try_new`]).
     pub fn try_new(vertices: &[Vector], corner_radius: f32) -> Result<Self, ShapeError> {
+        // The count before the widened copy is allocated.
+        if vertices.len() > smooth_ccd2d::MAX_VERTICES {
+            return Err(ShapeError::TooManyVertices { count: vertices.len() });
+        }
         let v: Vec<_> = vertices.iter().map(|&v| v64(v)).collect();
         smooth_ccd2d::RoundedPolygon::try_new(&v, corner_radius as f64).map(Self)
     }
@@ -286,13 +304,30 @@ delegate_to_f64!(CustomCurve, smooth_ccd2d::CustomCurve);
 
 impl CustomCurve {
     /// Wraps `curve`.
+    ///
+    /// # Panics
+    /// When the curve breaks its contract, as [`smooth_ccd2d::CustomCurve::new`].
     pub fn new(curve: impl ConvexCurve) -> Self {
         Self(smooth_ccd2d::CustomCurve::new(curve))
     }
 
     /// Wraps an already shared curve.
+    ///
+    /// # Panics
+    /// As [`CustomCurve::new`].
     pub fn from_arc(curve: Arc<dyn ConvexCurve>) -> Self {
         Self(smooth_ccd2d::CustomCurve::from_arc(curve))
+    }
+
+    /// Wraps `curve`, or says which of its methods breaks the contract
+    /// ([`smooth_ccd2d::CustomCurve::try_new`]).
+    pub fn try_new(curve: impl ConvexCurve) -> Result<Self, ShapeError> {
+        smooth_ccd2d::CustomCurve::try_new(curve).map(Self)
+    }
+
+    /// [`CustomCurve::try_new`] for an already shared curve.
+    pub fn try_from_arc(curve: Arc<dyn ConvexCurve>) -> Result<Self, ShapeError> {
+        smooth_ccd2d::CustomCurve::try_from_arc(curve).map(Self)
     }
 
     /// The wrapped curve.
@@ -366,6 +401,7 @@ mod tests {
             let m64 = wide.mass_properties(2.0);
             assert_eq!(m32.inv_mass, m64.inv_mass as f32, "{name}");
             assert_eq!(m32.inv_principal_inertia, m64.inv_principal_inertia as f32, "{name}");
+            assert_eq!(m32.local_com, v32(m64.local_com), "{name}");
             assert!(s.ccd_thickness() as f64 <= wide.ccd_thickness(), "{name}");
             let pt = Vector::new(3.0, 1.0);
             let proj = s.project_local_point(pt, true);

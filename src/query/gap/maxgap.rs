@@ -382,6 +382,16 @@ impl<'a> Pair<'a> {
 
     /// Every candidate axis of two polygons (module docs): each face normal and each
     /// vertex–vertex direction inside both vertices' cones. Exact whether they overlap or not.
+    ///
+    /// O(n + m) for polygons of n and m vertices: the kinks of each side are taken in
+    /// counter-clockwise order, and the other side's feature at each is found by hill climbing
+    /// from the one at the previous kink (the axis turns once round, and so does the climb);
+    /// the vertex pairs are those whose cones overlap — for each vertex of side 1, the features
+    /// of side 2 from the one at its cone's lower boundary to the one at its upper boundary
+    /// (and one more each way, for cones that meet only within [`CONE_SLACK`]), again by
+    /// climbing from the previous vertex's. (Trying every face against a fresh climb and every
+    /// vertex pair cost n·(n + m): 0.23 s for a polygon of 30,000 vertices against a box,
+    /// 2.5 s at 100,000; issue 32.)
     fn exhaustive(&self, fr: &GapFrame) -> Option<(Vector, usize, usize, Contact, f64)> {
         let [s1, s2] = self.sides;
         let mut best: Option<(Vector, usize, usize, Contact, f64)> = None;
@@ -391,11 +401,13 @@ impl<'a> Pair<'a> {
             }
         };
         for k in 0..2 {
+            let mut hint = (0, 0);
             for e in 0..self.sides[k].features() {
                 // The kink after feature e of side k.
                 let (_, hi, _) = self.sides[k].cone(e)?;
                 let u = self.axis(fr, k, hi);
-                let (i, j) = self.features(fr, u, (0, 0));
+                let (i, j) = self.features(fr, u, hint);
+                hint = (i, j);
                 let (i, j) = if k == 0 { (e, j) } else { (i, e) };
                 let at = if k == 0 {
                     [At::Upper, At::Inside]
@@ -409,20 +421,30 @@ impl<'a> Pair<'a> {
                 consider((u, i, j, if k == 0 { Contact::Face1 } else { Contact::Face2 }, g));
             }
         }
+        let mut j_lo = 0;
         for i in 0..s1.features() {
-            for j in 0..s2.features() {
-                let (Some((a, ra)), Some((b, rb))) = (s1.disc(i), s2.disc(j)) else {
-                    continue;
-                };
-                let w = fr.point(&self.motion, 1, b) - fr.point(&self.motion, 0, a);
-                let len = w.length();
-                if !(len > 0.0) {
-                    continue;
+            let Some((a, ra)) = s1.disc(i) else {
+                continue;
+            };
+            let (lo, hi, _) = s1.cone(i)?;
+            j_lo = s2.feature_of(self.body_dir(fr, 1, self.axis(fr, 0, lo)), j_lo);
+            let j_hi = s2.feature_of(self.body_dir(fr, 1, self.axis(fr, 0, hi)), j_lo);
+            // From the one before j_lo to the one after j_hi, counter-clockwise (at most all).
+            let n2 = s2.features();
+            let count = ((j_hi + n2 - j_lo) % n2 + 3).min(n2);
+            let mut j = s2.prev(j_lo);
+            for _ in 0..count {
+                if let Some((b, rb)) = s2.disc(j) {
+                    let w = fr.point(&self.motion, 1, b) - fr.point(&self.motion, 0, a);
+                    let len = w.length();
+                    if len > 0.0 {
+                        let u = w / len;
+                        if self.in_cone(fr, 0, i, u) && self.in_cone(fr, 1, j, u) {
+                            consider((u, i, j, Contact::Smooth, len - ra - rb));
+                        }
+                    }
                 }
-                let u = w / len;
-                if self.in_cone(fr, 0, i, u) && self.in_cone(fr, 1, j, u) {
-                    consider((u, i, j, Contact::Smooth, len - ra - rb));
-                }
+                j = s2.next(j);
             }
         }
         best
@@ -566,5 +588,115 @@ impl<'a> Pair<'a> {
                 (w1, w2)
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::numerics::math::{unit, Pose};
+    use crate::query::gap::PolySide;
+    use crate::{ConvexCurve, RoundedPolygon};
+    use parry2d_f64::query::NonlinearRigidMotion;
+
+    impl Pair<'_> {
+        /// The scan [`Pair::exhaustive`] replaced (issue 32): every face against a fresh climb,
+        /// every vertex pair — n·(n + m).
+        fn every_candidate(&self, fr: &GapFrame) -> f64 {
+            let [s1, s2] = self.sides;
+            let mut best = f64::NEG_INFINITY;
+            for k in 0..2 {
+                for e in 0..self.sides[k].features() {
+                    let (_, hi, _) = self.sides[k].cone(e).expect("a polygon");
+                    let u = self.axis(fr, k, hi);
+                    let (i, j) = self.features(fr, u, (0, 0));
+                    let (f, at) = if k == 0 {
+                        ([e, j], [At::Upper, At::Inside])
+                    } else {
+                        ([i, e], [At::Inside, At::Upper])
+                    };
+                    best = best.max(self.supports(fr, u, f, at).gap(u).0);
+                }
+            }
+            for i in 0..s1.features() {
+                for j in 0..s2.features() {
+                    let ((a, ra), (b, rb)) = (s1.disc(i).expect("vertex"), s2.disc(j).expect("vertex"));
+                    let w = fr.point(&self.motion, 1, b) - fr.point(&self.motion, 0, a);
+                    let len = w.length();
+                    if len > 0.0 && self.in_cone(fr, 0, i, w / len) && self.in_cone(fr, 1, j, w / len) {
+                        best = best.max(len - ra - rb);
+                    }
+                }
+            }
+            best
+        }
+    }
+
+    /// The merged sweep of [`Pair::exhaustive`] finds the same maximum as the scan of every face
+    /// and every vertex pair it replaced, to 4 ulps of the size (to the bit but where faces tie):
+    /// random polygons of 2 to 200 vertices, overlapping deeply, coincident, concentric or apart.
+    #[test]
+    fn exhaustive_sweep_equals_the_scan_of_every_candidate() {
+        let mut seed = 0x32u64;
+        let mut next = move || {
+            seed = seed.wrapping_add(0x9E37_79B9_7F4A_7C15);
+            let mut z = seed;
+            z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+            z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+            ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let polygon = |next: &mut dyn FnMut() -> f64| {
+            let n = [2, 3, 4, 5, 8, 17, 64, 200][(next() * 8.0) as usize];
+            let r = if next() < 0.3 { 0.0 } else { 0.3 * next() };
+            let rad = 0.2 + next();
+            let squash = 0.2 + 0.8 * next();
+            let verts: Vec<Vector> = if n == 2 {
+                vec![-unit(next() * 3.0) * rad, unit(next() * 3.0) * rad]
+            } else if next() < 0.3 {
+                (0..n).map(|i| unit(TAU * i as f64 / n as f64) * rad).collect()
+            } else {
+                (0..n)
+                    .map(|i| {
+                        let p = unit((i as f64 + 0.8 * next()) * TAU / n as f64) * rad;
+                        Vector::new(p.x, squash * p.y)
+                    })
+                    .collect()
+            };
+            RoundedPolygon::from_core_unchecked(verts, r)
+        };
+        fn side(p: &RoundedPolygon) -> Side<'_> {
+            Side::Poly(PolySide::new(p.vertices(), p.edge_normals(), p.corner_radius()).expect("a polygon"))
+        }
+        let (mut checked, mut exact) = (0, 0);
+        for case in 0..3000 {
+            let a = polygon(&mut next);
+            let b = if case % 5 == 0 { a.clone() } else { polygon(&mut next) };
+            let pose = match case % 5 {
+                0 | 1 => Pose::IDENTITY,
+                2 => Pose::new(Vector::ZERO, next() * TAU),
+                _ => Pose::new(unit(next() * TAU) * (2.5 * next()), next() * TAU),
+            };
+            let pair = Pair {
+                sides: [side(&a), side(&b)],
+                motion: GapMotion::new(
+                    &NonlinearRigidMotion::identity(),
+                    &NonlinearRigidMotion::constant_position(pose),
+                ),
+            };
+            let fr = pair.motion.frame(0.0);
+            let fast = pair.exhaustive(&fr).expect("finite").4;
+            let every = pair.every_candidate(&fr);
+            // Where two candidates tie (parallel faces: coincident or concentric polygons) the
+            // climbs may stop at the other vertex of the tie: the same gap to rounding.
+            let size = a.bounding_radius().max(b.bounding_radius());
+            assert!(
+                (fast - every).abs() <= 4.0 * f64::EPSILON * size,
+                "case {case}: {fast} vs {every}"
+            );
+            exact += usize::from(fast.to_bits() == every.to_bits());
+            checked += 1;
+        }
+        println!("exhaustive sweep: {checked} pairs, {exact} to the bit");
+        assert_eq!(checked, 3000);
     }
 }

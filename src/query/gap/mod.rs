@@ -56,8 +56,9 @@ mod tracker;
 pub(crate) use side::{CurveSide, PolySide, Side};
 
 use crate::error::{finite, QueryError};
-use crate::numerics::math::Vector;
+use crate::numerics::math::{direction, Vector};
 use crate::query::path::OnPath;
+use crate::query::time_scale::rescaled;
 use crate::query::toi::{TimeOfImpact, ToiOptions};
 use parry2d_f64::query::NonlinearRigidMotion;
 use tracker::GapTracker;
@@ -73,9 +74,7 @@ pub(crate) fn gap_time_of_impact(
     end_time: f64,
     options: &ToiOptions,
 ) -> Result<TimeOfImpact, QueryError> {
-    let p = OnPath::new(motion1, motion2, start_time, end_time, options.path)?;
-    let tracker = GapTracker::new(side1, &p.m1, side2, &p.m2, start_time, end_time, options, p.clock)?;
-    finite(tracker.run().map(|r| p.answer(r)))
+    gap_time_at_level(side1, motion1, side2, motion2, start_time, end_time, None, options)
 }
 
 /// The first time in `[start_time, end_time]` at which the signed distance of `side1` moving by
@@ -93,9 +92,60 @@ pub(crate) fn gap_time_to_level(
     level: f64,
     options: &ToiOptions,
 ) -> Result<TimeOfImpact, QueryError> {
+    gap_time_at_level(
+        side1,
+        motion1,
+        side2,
+        motion2,
+        start_time,
+        end_time,
+        Some(level),
+        options,
+    )
+}
+
+/// [`gap_time_of_impact`] (no `level`) or [`gap_time_to_level`]: rates beyond 2^±64 per second
+/// are run on a time scale where they are about 1 (`query::time_scale`), the motions on the
+/// options' path.
+#[allow(clippy::too_many_arguments)]
+fn gap_time_at_level(
+    side1: Side<'_>,
+    motion1: &NonlinearRigidMotion,
+    side2: Side<'_>,
+    motion2: &NonlinearRigidMotion,
+    start_time: f64,
+    end_time: f64,
+    level: Option<f64>,
+    options: &ToiOptions,
+) -> Result<TimeOfImpact, QueryError> {
+    let size = side1.radius_about(Vector::ZERO).max(side2.radius_about(Vector::ZERO));
+    if let Some(r) = rescaled(motion1, motion2, start_time, end_time, size) {
+        let a = on_path(side1, &r.m1, side2, &r.m2, r.t0, r.t1, level, options)?;
+        return finite(Ok(r.answer(a)));
+    }
+    finite(on_path(
+        side1, motion1, side2, motion2, start_time, end_time, level, options,
+    ))
+}
+
+/// The gap tracker of the pair on the options' path, down to `level` if given.
+#[allow(clippy::too_many_arguments)]
+fn on_path(
+    side1: Side<'_>,
+    motion1: &NonlinearRigidMotion,
+    side2: Side<'_>,
+    motion2: &NonlinearRigidMotion,
+    start_time: f64,
+    end_time: f64,
+    level: Option<f64>,
+    options: &ToiOptions,
+) -> Result<TimeOfImpact, QueryError> {
     let p = OnPath::new(motion1, motion2, start_time, end_time, options.path)?;
-    let tracker = GapTracker::new(side1, &p.m1, side2, &p.m2, start_time, end_time, options, p.clock)?;
-    finite(tracker.with_level(level).run().map(|r| p.answer(r)))
+    let mut tracker = GapTracker::new(side1, &p.m1, side2, &p.m2, start_time, end_time, options, p.clock)?;
+    if let Some(l) = level {
+        tracker = tracker.with_level(l);
+    }
+    tracker.run().map(|r| p.answer(r))
 }
 
 /// The signed distance of `side1` and `side2` with `side2` at `pos12` in `side1`'s frame
@@ -114,7 +164,7 @@ pub(crate) fn gap_distance(
     };
     let fr = pair.motion.frame(0.0);
     let t = pos12.translation;
-    let u0 = if t.length() > 0.0 { t.normalize() } else { Vector::X };
+    let u0 = direction(t);
     let at = pair.max_gap(&fr, u0, (0, 0))?;
     let (w1, w2) = pair.witnesses(&fr, &at);
     Some((at.d, w1, w2, fr.to_body(0, at.u)))

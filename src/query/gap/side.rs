@@ -24,12 +24,26 @@ pub(crate) struct PolySide<'a> {
     pub normals: &'a [Vector],
     /// The radius the core is dilated by (0 for a sharp polygon).
     pub radius: f64,
+    /// The largest distance from the local origin to the boundary
+    /// ([`PolySide::radius_about`] the origin), taken once for a polygon of more than
+    /// [`REACH_ONCE_ABOVE`] vertices: the walk of every exact distance reads it, and a scan of
+    /// the vertices there made each step of a time of impact cost O(n) (issue 32). Smaller
+    /// polygons scan (cheaper than taking it for a query that never asks).
+    reach: Option<f64>,
 }
+
+/// See [`PolySide::reach`].
+const REACH_ONCE_ABOVE: usize = 32;
 
 impl<'a> PolySide<'a> {
     /// The side, or `None` for fewer than two vertices or mismatched normals.
     pub(crate) fn new(verts: &'a [Vector], normals: &'a [Vector], radius: f64) -> Option<Self> {
-        (verts.len() >= 2 && normals.len() == verts.len()).then_some(Self { verts, normals, radius })
+        (verts.len() >= 2 && normals.len() == verts.len()).then(|| Self {
+            verts,
+            normals,
+            radius,
+            reach: (verts.len() > REACH_ONCE_ABOVE).then(|| farthest_vertex(verts, Vector::ZERO) + radius),
+        })
     }
 
     /// Number of vertices.
@@ -91,7 +105,10 @@ impl<'a> PolySide<'a> {
 
     /// The largest distance from `c` to the boundary (the core's furthest vertex plus the radius).
     pub(crate) fn radius_about(&self, c: Vector) -> f64 {
-        self.verts.iter().fold(0.0f64, |r, v| r.max((*v - c).length())) + self.radius
+        match self.reach {
+            Some(r) if c == Vector::ZERO => r,
+            _ => farthest_vertex(self.verts, c) + self.radius,
+        }
     }
 
     /// The support point of the dilated polygon for the unit body direction `m` whose core
@@ -100,6 +117,11 @@ impl<'a> PolySide<'a> {
     pub(crate) fn point(&self, i: usize, m: Vector) -> Vector {
         self.verts[i] + m * self.radius
     }
+}
+
+/// The largest distance from `c` to a vertex of `verts`.
+fn farthest_vertex(verts: &[Vector], c: Vector) -> f64 {
+    verts.iter().fold(0.0f64, |r, v| r.max((*v - c).length()))
 }
 
 /// A convex curve with its flat pieces (faces): the capsule-ellipse, a user's curve, any curve

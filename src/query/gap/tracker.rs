@@ -10,7 +10,7 @@ use super::maxgap::{Contact, GapMax, Pair};
 use super::side::Side;
 use crate::error::QueryError;
 use crate::numerics::clock::Clock;
-use crate::numerics::math::{rotate_cs, sin_cos, Vector};
+use crate::numerics::math::{direction, rotate_cs, sin_cos, Vector};
 use crate::query::stepping::{
     check_window, parabola_step, LeaveWalk, CONTACT_FLOOR, EXTENSION, EXTENSION_MARGIN, EXTENSION_ROUNDS, FINE,
     MIN_EXTENSION,
@@ -216,7 +216,7 @@ impl<'a> GapTracker<'a> {
     pub(crate) fn run(mut self) -> Result<TimeOfImpact, QueryError> {
         let delta = self.opts.target_distance;
         let dc = self.pair.motion.dc(self.t0);
-        let u0 = if dc.length() > 0.0 { -dc.normalize() } else { Vector::X };
+        let u0 = if dc == Vector::ZERO { Vector::X } else { -direction(dc) };
         let mut p = self.eval(self.t0, u0, (0, 0))?;
         if p.at.d <= delta + self.tol_d {
             let (d1, _) = self.rates(&p);

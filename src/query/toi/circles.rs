@@ -22,13 +22,24 @@ pub(crate) fn circles_reach(radius1: f64, c1: Vector, radius2: f64, c2: Vector, 
 /// `velocity` stay farther apart than `reach` (the sum of their radii plus the target distance)
 /// for a time `span`: min over s ∈ [0, span] of |offset + velocity·s| > reach (with a relative
 /// margin of 1e-12 against rounding). False for NaN input.
+///
+/// The time of closest approach is −offset·v/|v|²; when |v|² leaves the normal range of f64
+/// (speeds below about 1e-154 or above 1e154, whose squares underflow to 0 or overflow to ∞)
+/// it is taken with v scaled by its largest component, so that a slow approach over a long
+/// window is not a pair at rest, nor a fast one a pair that never moves (issue 32).
 #[inline]
 pub(crate) fn circles_stay_apart(offset: Vector, velocity: Vector, span: f64, reach: f64) -> bool {
     let vv = velocity.length_squared();
-    let s = if vv > 0.0 {
+    let s = if vv.is_normal() {
         (-offset.dot(velocity) / vv).clamp(0.0, span.max(0.0))
     } else {
-        0.0
+        let k = velocity.x.abs().max(velocity.y.abs());
+        if k > 0.0 && k.is_finite() {
+            let v = velocity / k;
+            (-offset.dot(v) / v.length_squared() / k).clamp(0.0, span.max(0.0))
+        } else {
+            0.0
+        }
     };
     (offset + velocity * s).length() > reach * (1.0 + CIRCLES_MARGIN)
 }

@@ -108,6 +108,7 @@ use crate::curve::ConvexCurve;
 use crate::error::{finite, QueryError};
 use crate::numerics::motion::{PairFrame, RelativeMotion};
 use crate::query::path::OnPath;
+use crate::query::time_scale::{rescaled, Rescaled, ScaledTrace};
 use parry2d_f64::query::NonlinearRigidMotion;
 
 /// The time of impact of `shape1` moving by `motion1` and `shape2` moving by `motion2` in
@@ -178,6 +179,46 @@ pub fn time_of_impact_traced<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized>(
 
 #[allow(clippy::too_many_arguments)]
 fn toi_roles<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized, T: Tracer>(
+    shape1: &A,
+    motion1: &NonlinearRigidMotion,
+    shape2: &B,
+    motion2: &NonlinearRigidMotion,
+    start_time: f64,
+    end_time: f64,
+    options: &ToiOptions,
+    trace: &mut T,
+) -> Result<TimeOfImpact, QueryError> {
+    // Rates beyond 2^±64 per second: the same query on a time scale where they are about 1
+    // (`query::time_scale`, issue 32).
+    let size = shape1.bounding_radius().max(shape2.bounding_radius());
+    if let Some(r) = rescaled(motion1, motion2, start_time, end_time, size) {
+        return toi_rescaled(shape1, shape2, options, trace, &r);
+    }
+    toi_roles_at_scale(shape1, motion1, shape2, motion2, start_time, end_time, options, trace)
+}
+
+/// [`toi_roles`] of a rescaled query, its answer and trace on the original time scale. Out of
+/// line: the ordinary queries' path stays as short as it was.
+#[cold]
+#[inline(never)]
+fn toi_rescaled<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized, T: Tracer>(
+    shape1: &A,
+    shape2: &B,
+    options: &ToiOptions,
+    trace: &mut T,
+    r: &Rescaled,
+) -> Result<TimeOfImpact, QueryError> {
+    let mut scaled = ScaledTrace {
+        inner: trace,
+        scale: r.scale,
+    };
+    let a = toi_roles_at_scale(shape1, &r.m1, shape2, &r.m2, r.t0, r.t1, options, &mut scaled)?;
+    Ok(r.answer(a))
+}
+
+/// [`toi_roles`] on the query's own time scale.
+#[allow(clippy::too_many_arguments)]
+fn toi_roles_at_scale<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized, T: Tracer>(
     shape1: &A,
     motion1: &NonlinearRigidMotion,
     shape2: &B,
