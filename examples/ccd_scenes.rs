@@ -7,7 +7,8 @@
 //! wall, frozen bodies, NaN, panics, the deepest penetration after a CCD-swept step and the mean
 //! step time (with the ratio, this crate's over rapier's), then the cases that failed.
 //!
-//! Run: `cargo run --release --example ccd_scenes` (optionally a family name to run only it).
+//! Run: `cargo run --release --example ccd_scenes` (optionally a family name, dashes for spaces,
+//! to run only it, and `--no-recycling` to run with rapier's contact recycling off).
 
 #[path = "common/mod.rs"]
 mod common;
@@ -16,17 +17,22 @@ use common::ccd_judge::{run_all, table};
 use common::ccd_scenes::{all_cases, Method};
 
 fn main() {
-    let filter = std::env::args().nth(1);
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    // `--no-recycling`: rapier's contact recycling off (`IntegrationParameters::contact_recycling`).
+    let recycling = !args.iter().any(|a| a == "--no-recycling");
+    let filter = args.iter().find(|a| !a.starts_with("--"));
     let cases: Vec<_> = all_cases()
         .into_iter()
-        .filter(|c| filter.as_deref().is_none_or(|f| c.family.name().replace(' ', "-") == f))
+        .filter(|c| filter.is_none_or(|f| c.family.name().replace(' ', "-") == *f))
+        .map(|c| common::ccd_scenes::Case { recycling, ..c })
         .collect();
     let t = std::time::Instant::now();
     let outcomes = run_all(&cases);
     println!(
-        "CCD scene suite: {} cases, dt = 1/60 s; rapier's caps lifted in {} of them (speed > 400 m/s or spin > 47 rad/s)",
+        "CCD scene suite: {} cases, dt = 1/60 s; rapier's caps lifted in {} of them (speed > 400 m/s or spin > 47 rad/s); contact recycling {}",
         cases.len(),
-        cases.iter().filter(|c| c.lifted()).count()
+        cases.iter().filter(|c| c.lifted()).count(),
+        if recycling { "on (rapier's default)" } else { "off" }
     );
     print!("{}", table(&cases, &outcomes));
     for (k, m) in Method::BOTH.iter().enumerate() {

@@ -132,6 +132,18 @@ macro_rules! composite_helpers {
             stop: bool,
         ) -> Result<Option<ShapeCastHit>, Unsupported> {
             let still = |m: &NonlinearRigidMotion| m.linvel == Vector::ZERO && m.angvel == 0.0;
+            // A heightfield is no composite shape to parry, which answers no cast against one.
+            use $parry::shape::TypedShape;
+            match (g1.as_typed_shape(), g2.as_typed_shape()) {
+                (TypedShape::HeightField(_), TypedShape::HeightField(_)) => return Err(Unsupported),
+                (_, TypedShape::HeightField(hf)) => {
+                    return Ok(cast_against_heightfield(d, m1, g1, m2, hf, t0, t1, stop, false))
+                }
+                (TypedShape::HeightField(hf), _) => {
+                    return Ok(cast_against_heightfield(d, m2, g2, m1, hf, t0, t1, stop, true))
+                }
+                _ => {}
+            }
             match (g1.as_composite_shape(), g2.as_composite_shape()) {
                 // A convex shape against a composite at rest (rapier's CCD against a polyline, a
                 // mesh or a compound of the static world): the parts culled by the shape's swept
@@ -235,6 +247,64 @@ macro_rules! composite_helpers {
                 })?
             };
             comp.bvh().find_best(Real::MAX, cost, leaf).map(|(_, hit)| hit)
+        }
+
+        /// The nonlinear cast of the convex `body` moving by `mb` against the heightfield `hf`
+        /// moving by `mh`, in the caller's order (`hf` first when `hf_first`): the earliest hit
+        /// over its segments, each cast by `d`. At rest (rapier's CCD), only the segments under
+        /// the box the body's bounding circle about its rotation centre sweeps (its centre's
+        /// straight path, grown by the circle's radius, in the heightfield's frame); moving, all.
+        #[allow(clippy::too_many_arguments)]
+        fn cast_against_heightfield(
+            d: &$dispatcher,
+            mb: &NonlinearRigidMotion,
+            body: &dyn Shape,
+            mh: &NonlinearRigidMotion,
+            hf: &$parry::shape::HeightField,
+            t0: Real,
+            t1: Real,
+            stop: bool,
+            hf_first: bool,
+        ) -> Option<ShapeCastHit> {
+            use $parry::query::QueryDispatcher as _;
+            let mut best: Option<ShapeCastHit> = None;
+            let mut each = |i: u32, seg: &$parry::shape::Segment| {
+                let r = if hf_first {
+                    d.cast_shapes_nonlinear(mh, seg, mb, body, t0, t1, stop)
+                } else {
+                    d.cast_shapes_nonlinear(mb, body, mh, seg, t0, t1, stop)
+                };
+                if let Ok(Some(mut hit)) = r {
+                    if hf_first {
+                        hit.subshape1 = i;
+                    } else {
+                        hit.subshape2 = i;
+                    }
+                    if best
+                        .as_ref()
+                        .is_none_or(|b| hit.time_of_impact < b.time_of_impact)
+                    {
+                        best = Some(hit);
+                    }
+                }
+            };
+            if mh.linvel == Vector::ZERO && mh.angvel == 0.0 {
+                let pose = mh.start;
+                let centre = |t: Real| pose.inverse_transform_point(mb.start * mb.local_center + mb.linvel * t);
+                let sphere = body.compute_local_bounding_sphere();
+                let reach = sphere.radius + (sphere.center - mb.local_center).length();
+                let (a, b) = (centre(t0), centre(t1));
+                let grow = Vector::splat(reach);
+                let aabb = $parry::bounding_volume::Aabb::new(a.min(b) - grow, a.max(b) + grow);
+                if aabb.mins.is_finite() && aabb.maxs.is_finite() {
+                    hf.map_elements_in_local_aabb(&aabb, &mut each);
+                    return best;
+                }
+            }
+            for (i, seg) in hf.segments().enumerate() {
+                each(i as u32, &seg);
+            }
+            best
         }
 
         /// Whether one side is a shape parry decomposes (composite, trimesh, heightfield, voxels).

@@ -344,7 +344,9 @@ fn route_for<'a>(g1: &'a dyn Shape, g2: &'a dyn Shape, scratch: &'a mut RouteScr
     if !ours && !cast {
         return Route::Parry { ours: false };
     }
-    if g1.as_composite_shape().is_some() || g2.as_composite_shape().is_some() {
+    // A heightfield is no composite shape to parry, but the dispatcher's casts take one.
+    let heightfield = |g: &dyn Shape| cast && g.shape_type() == ShapeType::HeightField;
+    if g1.as_composite_shape().is_some() || g2.as_composite_shape().is_some() || heightfield(g1) || heightfield(g2) {
         return if ours { Route::Composite } else { Route::Parry { ours } };
     }
     if let Some(hs) = half_space(g2) {

@@ -166,6 +166,60 @@ impl Clock {
         self.t0 + self.span * u
     }
 
+    /// The clock time u at the *path* time `tau` (σ⁻¹: where the rotation, uniform in the clock,
+    /// has got when the translation has done the fraction s = (τ − t₀)/T), with du/dτ and
+    /// d²u/dτ². With x = 2s − 1 and h = Δ/2, k = tan h:
+    ///
+    /// ```text
+    /// u = t₀ + T/2 + (T/2h)·atan(x·k),
+    /// du/dτ = (k/h) / (1 + x²k²),
+    /// d²u/dτ² = −(4k³x / (h·T)) / (1 + x²k²)².
+    /// ```
+    ///
+    /// So a rotation uniform in the clock, θ = θ₀ + ω·u, is the nlerp rotation in path time
+    /// (θ′ = 2k/(T(1 + x²k²)) with ω = 2h/T, the largest at the middle of the window).
+    #[inline]
+    pub(crate) fn clock_of_path(&self, tau: f64) -> (f64, f64, f64) {
+        let x = (2.0 * (tau - self.t0) * self.inv_t - 1.0).clamp(-1.0, 1.0);
+        let q = 1.0 + x * x * self.k * self.k;
+        let u = self.t0 + 0.5 * self.span + 0.5 * self.span / self.half * (x * self.k).atan();
+        let d1 = self.k / self.half / q;
+        let d2 = -4.0 * self.k * self.k * self.k * x / (self.half * self.span * q * q);
+        (u, d1, d2)
+    }
+
+    /// Bounds of |du/dτ| and |d²u/dτ²| ([`Clock::clock_of_path`]) for path times between `ta`
+    /// and `tb` (either order): |du/dτ| is largest at the x of least |x|, |d²u/dτ²| ∝
+    /// |x|/(1 + x²k²)² grows up to |x| = 1/(√3·|k|) and falls after.
+    pub(crate) fn clock_of_path_bounds(&self, ta: f64, tb: f64) -> (f64, f64) {
+        let x_at = |t: f64| (2.0 * (t - self.t0) * self.inv_t - 1.0).clamp(-1.0, 1.0);
+        let (xa, xb) = (x_at(ta).min(x_at(tb)), x_at(ta).max(x_at(tb)));
+        let k = self.k.abs();
+        let kh = (self.k / self.half).abs();
+        let least = if xa <= 0.0 && xb >= 0.0 {
+            0.0
+        } else {
+            xa.abs().min(xb.abs())
+        };
+        let d1 = kh / (1.0 + least * least * k * k);
+        let g = |x: f64| x / ((1.0 + x * x * k * k) * (1.0 + x * x * k * k));
+        let peak = 1.0 / (3.0f64.sqrt() * k);
+        let (lo, hi) = if xb <= 0.0 {
+            (-xb, -xa)
+        } else if xa >= 0.0 {
+            (xa, xb)
+        } else {
+            (0.0, (-xa).max(xb))
+        };
+        let top = if peak >= lo && peak <= hi {
+            g(peak)
+        } else {
+            g(lo).max(g(hi))
+        };
+        let d2 = 4.0 * k * k * kh * top * self.inv_t;
+        (d1, d2)
+    }
+
     /// The path's time (window start + fraction × window) of the clock time `t`.
     pub(crate) fn path_time(&self, t: f64) -> f64 {
         self.t0 + self.span * self.fraction(t)
@@ -196,6 +250,50 @@ mod tests {
     fn nlerp_angle(delta: f64, s: f64) -> f64 {
         let (x, y) = ((1.0 - s) + s * delta.cos(), s * delta.sin());
         y.atan2(x)
+    }
+
+    /// The clock of a path time is the nlerp rotation, uniform in the clock: its angle, its
+    /// derivatives (against central differences) and their bounds over intervals (against
+    /// dense sampling).
+    #[test]
+    fn the_clock_of_a_path_time_is_the_nlerp_rotation_with_its_derivatives_and_bounds() {
+        for delta in [1e-6, 0.1, -0.7, core::f64::consts::FRAC_PI_4, 2.0, -3.0, 3.1] {
+            let (t0, span) = (2.0, 0.5);
+            let c = Clock::nlerp(delta, t0, t0 + span).unwrap();
+            let omega = delta / span;
+            for i in 0..=200 {
+                let s = i as f64 / 200.0;
+                let tau = t0 + span * s;
+                let (u, d1, d2) = c.clock_of_path(tau);
+                let angle = omega * (u - t0);
+                assert!((angle - nlerp_angle(delta, s)).abs() < 1e-12, "Δ {delta} s {s}");
+                if i > 0 && i < 200 {
+                    let e = 1e-6;
+                    let (up, _, _) = c.clock_of_path(tau + e);
+                    let (um, _, _) = c.clock_of_path(tau - e);
+                    let (_, d1p, _) = c.clock_of_path(tau + e);
+                    let (_, d1m, _) = c.clock_of_path(tau - e);
+                    assert!(
+                        ((up - um) / (2.0 * e) - d1).abs() < 1e-5 * (1.0 + d1.abs()),
+                        "Δ {delta} s {s}"
+                    );
+                    assert!(
+                        ((d1p - d1m) / (2.0 * e) - d2).abs() < 1e-4 * (1.0 + d2.abs()),
+                        "Δ {delta} s {s}"
+                    );
+                }
+            }
+            for (a, b) in [(0.0, 1.0), (0.0, 0.3), (0.6, 0.9), (0.45, 0.55), (0.9, 1.0)] {
+                let (ta, tb) = (t0 + span * a, t0 + span * b);
+                let (m1, m2) = c.clock_of_path_bounds(ta, tb);
+                for i in 0..=1000 {
+                    let tau = ta + (tb - ta) * i as f64 / 1000.0;
+                    let (_, d1, d2) = c.clock_of_path(tau);
+                    assert!(d1.abs() <= m1 * (1.0 + 1e-12), "Δ {delta} [{a}, {b}]");
+                    assert!(d2.abs() <= m2 * (1.0 + 1e-12) + 1e-12, "Δ {delta} [{a}, {b}]");
+                }
+            }
+        }
     }
 
     #[test]

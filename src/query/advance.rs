@@ -40,7 +40,7 @@
 //! the rare query that runs out of [`ADVANCE_MAX_CONTACTS`] contacts or [`ADVANCE_MAX_STEPS`]
 //! steps (a graze that keeps S_n near δ).
 
-use crate::numerics::clock::{Clock, ClockExt};
+use crate::numerics::clock::Clock;
 use crate::numerics::math::{perp, Pose, Real, Vector};
 use crate::query::contact::{contact, Contact, SupportShape};
 use crate::query::path::OnPath;
@@ -80,12 +80,12 @@ enum Turning<'a> {
     CapsuleEllipse { r: (Real, Real, Real), centre: Vector },
 }
 
-/// The kinematics of B in A's frame (module docs) over the clock.
+/// The kinematics of B in A's frame (module docs), in the path's own time τ: the rotation
+/// centre moves uniformly, x(τ) = x₀ + d·τ, and the rotation is θ(τ) = θ₀ + ω·u(τ), with u the
+/// clock time of τ on the nlerp path (`Clock::clock_of_path`; u = τ on parry's motion).
 struct Kinematics {
-    /// B's rotation centre at clock time 0 (before the clock's translation), and d.
     x0: Vector,
     d: Vector,
-    /// B's rotation in A's frame at clock time 0, and its rate θ′.
     theta0: Real,
     omega: Real,
     clock: Option<Clock>,
@@ -94,22 +94,34 @@ struct Kinematics {
 }
 
 impl Kinematics {
-    /// x(u) and τ′(u) (x′ = d·τ′; the bound of |τ″| is taken apart).
-    fn x(&self, u: Real) -> (Vector, Real) {
+    /// θ, θ′ and θ″ at path time `tau`.
+    #[inline]
+    fn turn(&self, tau: Real) -> (Real, Real, Real) {
         match &self.clock {
-            None => (self.x0 + self.d * u, 1.0),
+            None => (self.theta0 + self.omega * tau, self.omega, 0.0),
             Some(c) => {
-                let j = c.jet(u);
-                (self.x0 + self.d * j.tau, j.d1)
+                let (u, d1, d2) = c.clock_of_path(tau);
+                (self.theta0 + self.omega * u, self.omega * d1, self.omega * d2)
             }
         }
     }
 
-    /// B's pose in A's frame at clock time `u`: T(x) R(θ) T(−c).
-    fn pose(&self, u: Real) -> Pose {
-        let (x, _) = self.x(u);
-        let r = Pose::new(Vector::ZERO, self.theta0 + self.omega * u);
-        Pose::from_translation(x) * r * Pose::from_translation(-self.centre)
+    /// Bounds of |θ′| and |θ″| for path times between `ta` and `tb`.
+    fn turn_bounds(&self, ta: Real, tb: Real) -> (Real, Real) {
+        let w = self.omega.abs();
+        match &self.clock {
+            None => (w, 0.0),
+            Some(c) => {
+                let (d1, d2) = c.clock_of_path_bounds(ta, tb);
+                (w * d1, w * d2)
+            }
+        }
+    }
+
+    /// B's pose in A's frame at path time `tau`: T(x) R(θ) T(−c).
+    fn pose(&self, tau: Real) -> Pose {
+        let r = Pose::new(Vector::ZERO, self.turn(tau).0);
+        Pose::from_translation(self.x0 + self.d * tau) * r * Pose::from_translation(-self.centre)
     }
 }
 
@@ -155,15 +167,13 @@ pub(crate) fn advance_time_of_impact(
     let k = kinematics(ma, mb, on.clock);
     // The caller's contact at the start (shape 1 first), in A-then-B order.
     let first = first.map(|c| if b_first { swapped(c, &k.pose(t0)) } else { c });
-    let g = if b_first {
-        Parry { a: g2, b: g1 }
-    } else {
-        Parry { a: g1, b: g2 }
-    };
+    let (a, b) = if b_first { (g2, g1) } else { (g1, g2) };
+    let b_polygonal = matches!(sb, SupportShape::Polygon { .. });
+    let g = Parry { a, b, b_polygonal };
     let Some(r) = advance(sa, sb, g, turning, &k, t0, t1, target, tol, first) else {
         return Advance::Declined;
     };
-    Advance::Answer(finish(r, on, &k, b_first))
+    Advance::Answer(finish(r, &k, b_first))
 }
 
 /// What [`advance`] found, in A-then-B order, on the clock.
@@ -201,6 +211,8 @@ impl Witnesses {
 pub(crate) struct Parry<'a> {
     pub a: &'a dyn Shape,
     pub b: &'a dyn Shape,
+    /// Whether B is a polygon (dilated or not).
+    pub b_polygonal: bool,
 }
 
 /// At a crossing of S_n (B at `pose` in A's frame, `n` the axis), an upper bound of the signed
@@ -227,7 +239,11 @@ fn certificate(g: Parry, pose: &Pose, n: Vector, enough: Real) -> Option<Witness
     if by_b.dist <= enough && ok(&by_b) {
         return Some(by_b);
     }
-    // A's highest point along n, projected on B (B's face holds it).
+    // A's highest point along n, projected on B (B's face holds it): for a polygon B, whose
+    // projection is cheap; a curved B's projection costs a contact query's time.
+    if !g.b_polygonal {
+        return None;
+    }
     let point_a = sa.local_support_point(n);
     let local = pose.inverse_transform_point(point_a);
     let proj = g.b.project_local_point(local, true);
@@ -381,7 +397,7 @@ fn support_value(sa: SupportShape, c: &Contact, n: Vector) -> Option<Real> {
 /// The lowest piece of S_n + h_A(n) − `h` at clock time `u`: its value and derivative.
 fn lowest_piece(turning: Turning, k: &Kinematics, n: Vector, h: Real, u: Real) -> (Real, Real) {
     let mut lowest = (Real::INFINITY, 0.0);
-    pieces(turning, k, n, h, u, |f, df, _| {
+    pieces(turning, k, n, h, u, u, |f, df, _| {
         if f < lowest.0 {
             lowest = (f, df);
         }
@@ -399,16 +415,16 @@ fn pieces(
     n: Vector,
     h: Real,
     u: Real,
+    u_end: Real,
     mut each: impl FnMut(Real, Real, Real),
 ) -> Real {
-    let (x, dtau) = k.x(u);
-    let theta = k.theta0 + k.omega * u;
+    let (theta, dtheta, _) = k.turn(u);
     let (s, c) = theta.sin_cos();
     // w = R(−θ) n and its perpendicular, in B's frame.
     let w = Vector::new(c * n.x + s * n.y, -s * n.x + c * n.y);
     let pw = perp(w);
-    let base = n.dot(x) - h;
-    let dbase = n.dot(k.d) * dtau;
+    let base = n.dot(k.x0 + k.d * u) - h;
+    let dbase = n.dot(k.d);
     match turning {
         Turning::Polygon {
             vertices,
@@ -418,7 +434,7 @@ fn pieces(
             for v in vertices {
                 // f = n·x + w·(v − c) − r − h;  f′ = n·d τ′ − θ′ perp(w)·(v − c).
                 let p = *v - centre;
-                each(base + w.dot(p) - radius, dbase - k.omega * pw.dot(p), p.length());
+                each(base + w.dot(p) - radius, dbase - dtheta * pw.dot(p), p.length());
             }
         }
         Turning::Ellipse { a, b, centre } => {
@@ -427,44 +443,42 @@ fn pieces(
             // The support point of the centred ellipse along w: (a² w_x, b² w_y)/k.
             let sp = Vector::new(a * wx, b * wy) / kk;
             let rho = a.max(b) * a.max(b) / a.min(b) + centre.length();
-            each(base - kk - w.dot(centre), dbase + k.omega * pw.dot(sp + centre), rho);
+            each(base - kk - w.dot(centre), dbase + dtheta * pw.dot(sp + centre), rho);
         }
         Turning::CapsuleEllipse {
             r: (r1, r2, r3),
             centre,
         } => {
-            // min over B of w·q = −h(u), u = −w: the half ellipse (r3, r1 + r2) for u_x < 0; the
-            // two arcs (radius r1 about (0, ±r2)) and the segment x = r1 for u_x ≥ 0, where
-            // −h(u) = min over the arcs' centres of −(0, ±r2)·u − r1 (the segment's normal is a
-            // concave kink between them). h is C¹ across u_x = 0 (the boundary's normal is
-            // continuous there), so each region's pieces bound S_n until u leaves the region:
-            // the step is capped where it may (u turns at |θ′|); next to the boundary both
+            // min over B of w·q = −h(q), q = −w: the half ellipse (r3, r1 + r2) for q_x < 0; the
+            // two arcs (radius r1 about (0, ±r2)) and the segment x = r1 for q_x ≥ 0, where
+            // −h(q) = min over the arcs' centres of −(0, ±r2)·q − r1 (the segment's normal is a
+            // concave kink between them). h is C¹ across q_x = 0 (the boundary's normal is
+            // continuous there), so each region's pieces bound S_n until q leaves the region:
+            // the step is capped where it may (q turns at |θ′|); next to the boundary both
             // regions' pieces are taken, which agree there to first order.
-            let u = -w;
+            let dir = -w;
             let b = r1 + r2;
             let rho = (r3 * r3 / b).max(b * b / r3).max(r1).max(r3).max(b) + centre.length();
-            let to_boundary = u.x.abs().min(1.0).asin();
+            let to_boundary = dir.x.abs().min(1.0).asin();
             let near = to_boundary < CAPSULE_BOUNDARY_ANGLE;
-            if u.x < 0.0 || near {
-                let (x, y) = (r3 * u.x, b * u.y);
+            if dir.x < 0.0 || near {
+                let (x, y) = (r3 * dir.x, b * dir.y);
                 let h = (x * x + y * y).sqrt();
                 let sp = Vector::new(r3 * x, b * y) / h;
                 // d/du of −h(−w) − w·c is −θ′ perp(w)·(s − c), s = ∇h(u) the support point.
-                each(base - h - w.dot(centre), dbase - k.omega * pw.dot(sp - centre), rho);
+                each(base - h - w.dot(centre), dbase - dtheta * pw.dot(sp - centre), rho);
             }
-            if u.x >= 0.0 || near {
+            if dir.x >= 0.0 || near {
                 for arc in [Vector::new(0.0, r2), Vector::new(0.0, -r2)] {
                     // −arc·u − r1 = w·arc − r1: a vertex with radius r1.
                     let p = arc - centre;
-                    each(base + w.dot(p) - r1, dbase - k.omega * pw.dot(p), rho);
+                    each(base + w.dot(p) - r1, dbase - dtheta * pw.dot(p), rho);
                 }
             }
+            // q turns at |θ′|, at most its bound over the rest of the window.
             let angle = if near { FRAC_PI_2 } else { to_boundary };
-            return if k.omega != 0.0 {
-                angle / k.omega.abs()
-            } else {
-                Real::INFINITY
-            };
+            let fastest = k.turn_bounds(u, u_end).0;
+            return if fastest > 0.0 { angle / fastest } else { Real::INFINITY };
         }
     }
     Real::INFINITY
@@ -482,15 +496,16 @@ fn first_crossing(
     u1: Real,
     tol: Real,
 ) -> Option<Option<Real>> {
-    // |n·d|·max|τ″| over the rest of the window, the translation's share of every bound.
-    let nd = n.dot(k.d).abs() * k.clock.bounds_over(u, u1).d2;
-    let w2 = k.omega * k.omega;
+    // |f″| ≤ ρ·(θ′² + |θ″|) for every piece (the translation is uniform in the path's time):
+    // the turn's bounds over the rest of the window.
+    let (d1, d2) = k.turn_bounds(u, u1);
+    let turn = d1 * d1 + d2;
     for _ in 0..ADVANCE_MAX_STEPS {
         let mut step = Real::INFINITY;
         let mut lowest = Real::INFINITY;
-        let cap = pieces(turning, k, n, level, u, |f, df, rho| {
+        let cap = pieces(turning, k, n, level, u, u1, |f, df, rho| {
             lowest = lowest.min(f);
-            let kk = nd + w2 * rho;
+            let kk = turn * rho;
             // The first root of f + f′s − K s²/2 (the step that is safe for this piece), in the
             // form without cancellation: 2f/(√(f′² + 2Kf) − f′) when the piece comes down.
             let f = f.max(0.0);
@@ -532,18 +547,14 @@ fn first_crossing(
 }
 
 /// The answer in the caller's order and on the path's time.
-fn finish(r: Found, on: &OnPath, k: &Kinematics, b_first: bool) -> TimeOfImpact {
+fn finish(r: Found, k: &Kinematics, b_first: bool) -> TimeOfImpact {
     let cost = ToiCost {
         evaluations: r.contacts,
         ..ToiCost::default()
     };
-    let (time, per_clock) = match &on.clock {
-        None => (r.time, 1.0),
-        Some(c) => (c.path_time(r.time), c.jet(r.time).d1),
-    };
     let mut out = TimeOfImpact {
         status: r.status,
-        time,
+        time: r.time,
         distance: 0.0,
         distance_rate: 0.0,
         point1: Vector::ZERO,
@@ -556,7 +567,7 @@ fn finish(r: Found, on: &OnPath, k: &Kinematics, b_first: bool) -> TimeOfImpact 
         // A's frame: A's witness is in its own frame; B's goes to B's.
         let pose = k.pose(r.time);
         out.distance = w.dist;
-        out.distance_rate = if per_clock > 0.0 { r.rate / per_clock } else { r.rate };
+        out.distance_rate = r.rate;
         out.point1 = w.point_a;
         out.point2 = pose.inverse_transform_point(w.point_b);
         out.normal1 = w.normal;

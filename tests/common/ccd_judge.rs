@@ -1,10 +1,13 @@
 //! Runs the cases of the CCD scene suite (`ccd_scenes.rs`) and judges each step:
 //!
 //! * **through**: a body's centre, on its straight path over one step, crosses a `Segment` or a
-//!   `Polyline` edge or meets the inside of a solid (fixed geometry, and the bodies a bullet
-//!   sweeps: dynamic bodies that are not bullets), the path taken in the target's frame (for a
-//!   moving target, followed in [`MOVING_SAMPLES`] pieces against the target's pose interpolated
-//!   as rapier interpolates a clamped body);
+//!   `Polyline` edge or meets the inside of a solid: fixed geometry, and the bodies a bullet
+//!   sweeps (dynamic bodies that are not bullets, at their end pose, as rapier casts them, among
+//!   rapier's candidates: a body whose box at the step's start meets the bullet's swept box);
+//! * **passed** (not a failure of the case; what rapier's CCD does not look at, two moving
+//!   bodies): a body's centre entering a moving body on the path taken in that body's frame,
+//!   followed in [`MOVING_SAMPLES`] pieces against its pose interpolated as rapier interpolates
+//!   a clamped body;
 //! * **frozen**: a body whose fastest point moves at 1 m/s or more (|v| + |ω|·R, R its radius)
 //!   moves less than 0.1 % of that speed × dt (|Δc| + |Δθ|·R) for 10 steps in a row;
 //! * **NaN** in a body's pose or velocity, and **panics** (caught);
@@ -15,6 +18,7 @@
 #![allow(dead_code)]
 
 use super::ccd_scenes::{build, drive, Case, Family, Method, Scene, DT};
+use parry2d_f64::bounding_volume::BoundingVolume;
 use parry2d_f64::query::sweep_toi::Sweep;
 use parry2d_f64::query::{DefaultQueryDispatcher, QueryDispatcher, Ray};
 use parry2d_f64::shape::{Shape, TypedShape};
@@ -288,8 +292,15 @@ fn through(
                     }
                 }
                 Some(b) => {
-                    // Rapier's contract: the target still at its end pose, entered from outside.
-                    if !co.shape().contains_local_point(e0) && path_hits(co.shape(), e0, e1) {
+                    // rapier's contract: the target still at its end pose, entered from outside —
+                    // for the targets rapier casts against: its candidates are the bodies whose
+                    // box in its tree (where they were at the step's start) meets the bullet's
+                    // swept box; a body that came into the path during the step is a moving
+                    // pair rapier never looked at (counted as passed below).
+                    let shape = co.shape();
+                    let swept = shape_box(scene, *h, before[i].com, c1);
+                    let candidate = swept.is_none_or(|b| shape.compute_aabb(&pose0).intersects(&b));
+                    if candidate && !shape.contains_local_point(e0) && path_hits(shape, e0, e1) {
                         return (Some(describe("through a dynamic body at its end pose")), passed);
                     }
                     if passed.is_none() {
@@ -310,6 +321,21 @@ fn through(
         }
     }
     (None, passed)
+}
+
+/// The box a body's bounding circle sweeps from centre `c0` to centre `c1` (`None` for a body
+/// without a collider).
+fn shape_box(
+    scene: &Scene,
+    body: RigidBodyHandle,
+    c0: Vector,
+    c1: Vector,
+) -> Option<parry2d_f64::bounding_volume::Aabb> {
+    let co = scene.world.bodies[body].colliders().first()?;
+    let shape = scene.world.colliders[*co].shape();
+    let sphere = shape.compute_local_bounding_sphere();
+    let r = Vector::splat(sphere.radius + sphere.center.length());
+    Some(parry2d_f64::bounding_volume::Aabb::new(c0.min(c1) - r, c0.max(c1) + r))
 }
 
 /// The deepest penetration, after this step, of a body rapier's CCD swept in it into its

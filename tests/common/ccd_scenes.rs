@@ -279,6 +279,8 @@ pub struct Case {
     pub spin: f64,
     /// The spin's index in [`SPINS`] (picks a family's variant, such as a wall's thickness).
     pub variant: usize,
+    /// rapier's contact recycling (`IntegrationParameters::contact_recycling`, on by default).
+    pub recycling: bool,
 }
 
 impl Case {
@@ -301,6 +303,7 @@ pub fn all_cases() -> Vec<Case> {
                         speed,
                         spin,
                         variant,
+                        recycling: true,
                     });
                 }
             }
@@ -338,6 +341,7 @@ pub fn build(case: &Case, method: Method) -> Scene {
     if lifted {
         world.params.normalized_max_linear_velocity = f64::MAX;
     }
+    world.params.contact_recycling = case.recycling;
     let mut fixed_list = Vec::new();
     let mut dynamic = Vec::new();
     let mut motor = None;

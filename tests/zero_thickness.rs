@@ -1,0 +1,138 @@
+//! rapier's CCD against walls of no thickness: parry's `Segment`, `Polyline`, `TriMesh` and
+//! `HeightField` (`ccd_thickness` 0) and the `HalfSpace`, with this crate's disc resting on them.
+//!
+//! The reproduction of issue 29: a disc `Ellipse::new(0.2, 0.2)` at (0, 0.2) resting on the wall
+//! y = 0, moving at (−6, −0.1) m/s and spinning at 4 rad/s, one step of 1/60 s, cast for rapier
+//! (`stop_at_penetration = false`). An allowance taken from the thinner shape's `ccd_thickness`
+//! (0 for these walls) answered a hit at the start's nudge on every step: the disc froze. Under
+//! `CastPolicy::Rapier` the translation may take the contact a quarter of the disc's inradius
+//! deeper (0.05) and the disc's core (a quarter of it about the centre) may not reach the wall:
+//! sliding along (0.0017 deeper over the step) or away, no hit; driven in at 60 m/s, a hit where
+//! the contact is 0.05 deep, well inside the step.
+
+use parry2d_f64::math::{Pose, Vector};
+use parry2d_f64::query::{DefaultQueryDispatcher, NonlinearRigidMotion, QueryDispatcher};
+use parry2d_f64::shape::{Ball, HalfSpace, HeightField, Polyline, Segment, Shape, TriMesh};
+use smooth_ccd2d::{CastPolicy, Ellipse, SmoothDispatcher};
+
+const DT: f64 = 1.0 / 60.0;
+
+/// The walls, their top at y = 0 over −10 ≤ x ≤ 10, and whether parry gives them no thickness.
+fn walls() -> Vec<(&'static str, Box<dyn Shape>)> {
+    let (a, b) = (Vector::new(-10.0, 0.0), Vector::new(10.0, 0.0));
+    vec![
+        ("Segment", Box::new(Segment::new(a, b))),
+        (
+            "Polyline",
+            Box::new(Polyline::new(
+                vec![a, Vector::new(-2.0, 0.0), Vector::new(3.0, 0.0), b],
+                None,
+            )),
+        ),
+        (
+            "TriMesh",
+            Box::new(
+                TriMesh::new(
+                    vec![a, b, Vector::new(10.0, -1.0), Vector::new(-10.0, -1.0)],
+                    vec![[0, 3, 1], [1, 3, 2]],
+                )
+                .expect("a mesh"),
+            ),
+        ),
+        (
+            "HeightField",
+            Box::new(HeightField::new(vec![0.0; 9], Vector::new(20.0, 1.0))),
+        ),
+        ("HalfSpace", Box::new(HalfSpace::new(Vector::Y))),
+    ]
+}
+
+/// The disc at (x, 0.2 − depth) with velocity `v`, spinning at 4 rad/s.
+fn disc_motion(depth: f64, v: Vector) -> NonlinearRigidMotion {
+    NonlinearRigidMotion::new(Pose::translation(0.3, 0.2 - depth), Vector::ZERO, v, 4.0)
+}
+
+#[test]
+fn walls_of_no_thickness_have_parrys_zero_ccd_thickness() {
+    for (name, wall) in walls() {
+        let t = wall.ccd_thickness();
+        println!("{name:<12} ccd_thickness {t:e}");
+        if name != "HalfSpace" {
+            assert_eq!(t, 0.0, "{name}");
+        }
+    }
+}
+
+#[test]
+fn a_disc_resting_on_a_wall_of_no_thickness_slides_along_or_away_without_a_hit() {
+    let d = SmoothDispatcher::default();
+    let disc = Ellipse::new(0.2, 0.2);
+    let wall_at = NonlinearRigidMotion::constant_position(Pose::IDENTITY);
+    // parry's own dispatcher on a `Ball`, for the record.
+    let issue = disc_motion(0.0, Vector::new(-6.0, -0.1));
+    let parry = DefaultQueryDispatcher
+        .cast_shapes_nonlinear(
+            &issue,
+            &Ball::new(0.2),
+            &wall_at,
+            &Segment::new(Vector::new(-10.0, 0.0), Vector::new(10.0, 0.0)),
+            0.0,
+            DT,
+            false,
+        )
+        .unwrap();
+    println!(
+        "parry's dispatcher, Ball on the Segment: {:?}",
+        parry.map(|h| h.time_of_impact)
+    );
+    let mut cases = 0;
+    for (name, wall) in walls() {
+        // Touching, and 1e-3 in (as rapier's solver leaves a resting body).
+        for depth in [0.0, 1e-3] {
+            for v in [
+                Vector::new(-6.0, -0.1),
+                Vector::new(-6.0, 0.1),
+                Vector::new(6.0, 0.0),
+                Vector::new(0.0, 0.5),
+            ] {
+                let hit = d
+                    .cast_shapes_nonlinear(&disc_motion(depth, v), &disc, &wall_at, &*wall, 0.0, DT, false)
+                    .unwrap_or_else(|_| panic!("{name}: answered"));
+                assert!(hit.is_none(), "{name} depth {depth} v {v}: {hit:?}");
+                cases += 1;
+            }
+        }
+    }
+    println!("{cases} slides and departures: no hit");
+}
+
+/// Driven into the wall at 60 m/s from contact: a hit within the step where the translation has
+/// taken the contact the allowance (a quarter of the inradius, 0.05) deeper, 0.05/60 s in;
+/// never at the start, which rapier discards.
+#[test]
+fn a_disc_driven_into_a_wall_of_no_thickness_is_stopped_the_allowance_deep() {
+    let d = SmoothDispatcher::default();
+    let disc = Ellipse::new(0.2, 0.2);
+    let wall_at = NonlinearRigidMotion::constant_position(Pose::IDENTITY);
+    let allowance = CastPolicy::ALLOWANCE * 0.2;
+    for (name, wall) in walls() {
+        for depth in [0.0, 1e-3] {
+            let m = disc_motion(depth, Vector::new(-6.0, -60.0));
+            let hit = d
+                .cast_shapes_nonlinear(&m, &disc, &wall_at, &*wall, 0.0, DT, false)
+                .unwrap_or_else(|_| panic!("{name}: answered"))
+                .unwrap_or_else(|| panic!("{name} depth {depth}: a hit"));
+            let t = hit.time_of_impact;
+            // The translation takes the contact from −depth down to min(−A, −depth − A), A
+            // deeper, at 60 m/s.
+            let expected = allowance / 60.0;
+            println!(
+                "{name:<12} depth {depth:e}: hit at {:.4} of the step (expected {:.4})",
+                t / DT,
+                expected / DT
+            );
+            assert!(t > 0.0 && t < DT, "{name}: {t}");
+            assert!((t - expected).abs() < 1e-9, "{name} depth {depth}: {t} vs {expected}");
+        }
+    }
+}
