@@ -118,14 +118,14 @@ const FUZZ_CASES: u64 = 40_000;
 /// manifold and thickness changes).
 const FUZZ_DIGESTS: [(&str, u64); 9] = [
     ("coincident", 0x443C2C119C45A9EC),
-    ("concentric", 0xA4F83D5DCF32C327),
-    ("extreme-scale", 0x6B91195290CA3A2F),
-    ("grazing", 0xB3CC86807F152CB1),
-    ("parry-pair", 0x259C5AA6E3F6B705),
-    ("random", 0x2A532D343FF78D97),
-    ("thin-ellipse", 0xE5FCF22ACDAB8388),
+    ("concentric", 0x1540F8E63D604063),
+    ("extreme-scale", 0x04F1A438F1EC96CC),
+    ("grazing", 0xF3DBB993FB69C499),
+    ("parry-pair", 0x3BB194BAE1013B18),
+    ("random", 0xAB25B9AE61098D86),
+    ("thin-ellipse", 0xCC2E77C833DC4DB8),
     ("touching-at-t0", 0x78A5D3EE8943D505),
-    ("wild", 0x2D0DBEEDB0978D20),
+    ("wild", 0x76C58AAB4659BF25),
 ];
 
 /// Final-state hash of the rapier scene (re-recorded with issue 17: the CCD casts between its
@@ -139,8 +139,10 @@ const FUZZ_DIGESTS: [(&str, u64); 9] = [
 /// two ellipse pieces on a part of the circle changed as above, 0x973C_2FA2_DB3A_D289 before
 /// issue 29's rapier rule, core contacts and ccd_thickness; 0xB174_CEB7_9BD7_5005 with them before
 /// the core contacts of both bodies, the segments' contacts from the centre's side and the
-/// separating-axis advancement of rapier's casts).
-const RAPIER_STATE: u64 = 0x0D4B_50B3_6828_BCD3;
+/// separating-axis advancement of rapier's casts; 0x0D4B_50B3_6828_BCD3 before the advancement
+/// ran in the path's own time and the scene's three shots lifted rapier's rotation cap, 120 rad/s
+/// being 2 rad a step).
+const RAPIER_STATE: u64 = 0xF9BF_593A_CD1F_E77E;
 
 /// FNV-1a of a sequence of words.
 fn fnv(words: impl IntoIterator<Item = u64>) -> u64 {

@@ -111,6 +111,9 @@ fn fire(shot: Shot, smooth: bool) -> (Option<usize>, f32) {
             .rotation(shot.angle0)
             .linvel(Vector::new(shot.speed, 0.0))
             .angvel(shot.spin)
+            // Spins above π/4 a step (47 rad/s at 60 Hz) are rapier's cap: lifted for the spin
+            // claimed to be the spin simulated.
+            .allow_fast_rotation(shot.spin.abs() / 60.0 > core::f32::consts::FRAC_PI_4)
             .ccd_enabled(true)
             .can_sleep(false),
         ColliderBuilder::new(shot_shape(shot.body, smooth)),
