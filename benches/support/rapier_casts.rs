@@ -903,7 +903,7 @@ pub fn table() {
                         parry_wrong.push((
                             set,
                             format!(
-                                "parry {} (answer {:?}, sweep status {:?}, touching reference {:?}): {}",
+                                "parry {} (answer {:?}, sweep status {:?}, reference of this crate's event {:?}): {}",
                                 if j.parry_v.miss { "miss" } else { "false" },
                                 j.parry,
                                 parry_status(c),
