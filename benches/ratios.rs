@@ -6,11 +6,15 @@
 //! of impact's cost grows with turns before impact, axis ratio and angular velocity (also drawn
 //! to `docs/figures/toi_growth.png`), and a rapier step of the pile (with where it goes: the
 //! dispatcher's calls by pair kind, and rapier's stage timers in a build with rapier's
-//! `profiler` feature, `cargo bench --bench ratios --features rapier2d-f64/profiler -- pile`).
+//! `profiler` feature, `cargo bench --bench ratios --features rapier2d-f64/profiler -- pile`),
+//! and rapier's CCD casts, this crate's shapes through `SmoothDispatcher` against the same bodies
+//! as parry's shapes through `sweep_time_of_impact`, on every pair kind that function accepts
+//! (section `rapier-casts`, `support/rapier_casts.rs`: starting apart with spins up to π/4 a step
+//! and beyond, and in contact, each answer judged against the reference on the nlerp path).
 //!
 //! Run with `cargo bench --bench ratios` (all sections, a few minutes on two cores), or name
 //! sections: `cargo bench --bench ratios -- classes distance manifolds parry-pairs sweep growth
-//! pile`
+//! pile rapier-casts`
 //! (`classes` runs `classes-native` too; `native` alone runs only it).
 //!
 //! Method: every scenario is timed on its own, for ours and for parry alternately, in several
@@ -18,7 +22,8 @@
 //! timer's resolution), and a scenario's time is the minimum over the rounds (robust against
 //! interference from other processes). Ratios are parry's time over ours: above 1, ours is
 //! faster. The casts run through the dispatchers with `stop_at_penetration = true` and target
-//! distance 0.
+//! distance 0 (but in `rapier-casts`, which makes rapier's own calls: `false` for ours, parry's
+//! sweep with rapier's `linear_slop`).
 
 mod support;
 
@@ -730,6 +735,9 @@ fn main() {
     }
     if want("growth") {
         growth_tables();
+    }
+    if want("rapier-casts") {
+        support::rapier_casts::table();
     }
     if want("pile") {
         support::pile_tables::pile_table();

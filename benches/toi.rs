@@ -16,7 +16,11 @@
 //!   `SmoothDispatcher` against parry's polygon approximations;
 //! * `ccd/resting-sweep`: rapier's CCD sweep (`stop_at_penetration = false`) of three bodies
 //!   already in the pile's floor (`scenes::resting_sweeps`, recorded in the pile), the exact
-//!   shapes against parry's on its stand-ins.
+//!   shapes against parry's on its stand-ins;
+//! * `rapier-casts/<set>`: rapier's CCD casts of `support/rapier_casts.rs` (this crate's shapes
+//!   through `SmoothDispatcher` against the same bodies as parry's shapes through
+//!   `sweep_time_of_impact`), starting apart with spins up to π/4 a step and beyond, and in
+//!   contact.
 //!
 //! Run with `cargo bench --bench toi` (add a filter such as `-- distance` for one kind). The
 //! ratios with the accuracy beside them are printed by `cargo bench --bench ratios`.
@@ -263,9 +267,48 @@ fn bench_resting_sweeps(c: &mut Criterion) {
     g.finish();
 }
 
+/// rapier's CCD casts (`support::rapier_casts`): per set, every body kind against every target
+/// kind, `RAPIER_BATCH` cases each; ours (`SmoothDispatcher::cast_shapes_nonlinear`, rapier's call
+/// for this crate's shapes) and parry (`sweep_time_of_impact` with rapier's core-circle retry,
+/// rapier's call for parry's shapes) as two functions of one group.
+fn bench_rapier_casts(c: &mut Criterion) {
+    use support::rapier_casts::{make_case, ours_cast, parry_cast, Body, Set, Target};
+    const RAPIER_BATCH: usize = 8;
+    let d = SmoothDispatcher::default();
+    for (set_index, set) in Set::ALL.into_iter().enumerate() {
+        let mut cases = Vec::new();
+        for body in Body::ALL {
+            for target in Target::ALL {
+                for _ in 0..RAPIER_BATCH {
+                    // Seeds of their own (the ratios section draws its cases from others).
+                    let seed = 0xC417_0000 + (set_index * 1000 + cases.len()) as u64;
+                    cases.push(make_case(body, target, set, seed));
+                }
+            }
+        }
+        let mut g = c.benchmark_group(format!("rapier-casts/{set:?}"));
+        short(&mut g);
+        g.bench_function(BenchmarkId::new("ours", cases.len()), |b| {
+            b.iter(|| {
+                for case in &cases {
+                    black_box(ours_cast(case, &d));
+                }
+            })
+        });
+        g.bench_function(BenchmarkId::new("parry-sweep", cases.len()), |b| {
+            b.iter(|| {
+                for case in &cases {
+                    black_box(parry_cast(case));
+                }
+            })
+        });
+        g.finish();
+    }
+}
+
 criterion_group! {
     name = benches;
     config = Criterion::default();
-    targets = bench_toi, bench_distance, bench_manifolds, bench_sweep, bench_pile, bench_resting_sweeps
+    targets = bench_toi, bench_distance, bench_manifolds, bench_sweep, bench_pile, bench_resting_sweeps, bench_rapier_casts
 }
 criterion_main!(benches);

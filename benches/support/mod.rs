@@ -32,6 +32,7 @@ pub mod native;
 pub mod parry_pairs;
 pub mod pile;
 pub mod pile_tables;
+pub mod rapier_casts;
 pub mod replay;
 
 use parry2d_f64::math::Pose;
