@@ -77,6 +77,12 @@ pub enum CastPolicy {
     /// their constant spins.
     #[default]
     Rapier,
+    /// rapier's rules of [`CastPolicy::Rapier`] on parry's constant-spin motions
+    /// ([`MotionPath::ConstantSpin`]) whatever the bodies do: the casts of the moving-pairs
+    /// pass (`MovingPairs`, feature `rapier`), which puts a body it stops on its constant spin,
+    /// not on rapier's nlerp clamp path (rule 1 of the module docs is the only rule that
+    /// changes).
+    RapierConstantSpin,
     /// The crate's time of impact as it is ([`crate::time_of_impact`], [`crate::shape_time_of_impact`]):
     /// parry's constant-spin motions, and with `stop_at_penetration = false` a separating
     /// contact at the start looked past and an approaching one reported at the start time.
@@ -84,6 +90,12 @@ pub enum CastPolicy {
 }
 
 impl CastPolicy {
+    /// Whether the policy applies rapier's rules ([`CastPolicy::Rapier`],
+    /// [`CastPolicy::RapierConstantSpin`]).
+    pub fn is_rapier(self) -> bool {
+        matches!(self, CastPolicy::Rapier | CastPolicy::RapierConstantSpin)
+    }
+
     /// Shapes closer than this fraction of the pair's size (the sum of the bounding radii) at
     /// the start of a cast are in contact there: rapier's CCD leaves a body it clamped at an
     /// impact about 10⁻¹⁰ from the other shape.
@@ -168,9 +180,9 @@ pub(crate) fn inradius_about(g: &dyn Shape, centre: Vector) -> Real {
 }
 
 /// The options of a cast on rapier's clamp path: nlerp, unless both bodies turn (a pair rapier
-/// never casts; the constant spins then).
-pub(crate) fn rapier_path(c: &NonlinearCast, opts: &ToiOptions) -> ToiOptions {
-    let path = if c.m1.angvel == 0.0 || c.m2.angvel == 0.0 {
+/// never casts; the constant spins then) or the policy is [`CastPolicy::RapierConstantSpin`].
+pub(crate) fn rapier_path(c: &NonlinearCast, opts: &ToiOptions, policy: CastPolicy) -> ToiOptions {
+    let path = if policy != CastPolicy::RapierConstantSpin && (c.m1.angvel == 0.0 || c.m2.angvel == 0.0) {
         MotionPath::Nlerp
     } else {
         MotionPath::ConstantSpin
