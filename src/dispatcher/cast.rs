@@ -35,6 +35,9 @@ pub(crate) struct NonlinearCast<'a> {
     pub t0: Real,
     pub t1: Real,
     pub stop: bool,
+    /// Rule 3 of `rapier_rule` on the full motions, rotation included
+    /// ([`crate::CastPolicy::RapierConstantSpin`]).
+    pub spin_at_start: bool,
 }
 
 /// parry's hit for this crate's answer.

@@ -32,6 +32,15 @@
 //!    [`CastPolicy::START_NUDGE`] of the window after the start (rapier would discard the start
 //!    itself), or no hit.
 //!
+//! With [`CastPolicy::RapierConstantSpin`] (the moving-pairs pass's casts), rule 1 takes
+//! parry's constant-spin path, and rule 3 measures the deepening on the *whole* motions,
+//! rotation included, rather than on the translation alone: the pass puts a body it stops on
+//! that path, whose spin is the solver's own spin, so a contact the solver sees leaving is one
+//! the rule sees leaving too (the freeze described below comes from the nlerp path turning the
+//! other way, which this policy never takes). Measured on the translation alone, two spinning
+//! bodies whose contact points the spin carries apart while their centres approach were
+//! stopped at the start of every step, frozen in each other.
+//!
 //! What rule 3 leaves to the solver — the overlap a spin brings in at a start contact — the
 //! solver sees at the next step: the contact manifold's two points where faces face each other,
 //! and its *core contact* (`core_disc`), a speculative point of the body's core that stops a
@@ -250,7 +259,8 @@ fn first_time(
 /// iteration from the left finds them exactly (`translation_level`). `level` answers for the
 /// pairs the contact query does not read: the first time the signed distance of the pair
 /// moving by the two given motions comes down to a level (the gap tracker, or the half-space
-/// cast on a shifted plane).
+/// cast on a shifted plane); with `c.spin_at_start` it answers the deepening on the whole
+/// motions ([`CastPolicy::RapierConstantSpin`]).
 pub(crate) fn start_contact_answer(
     c: &NonlinearCast,
     d0: Real,
@@ -270,7 +280,14 @@ pub(crate) fn start_contact_answer(
     let allowance = CastPolicy::ALLOWANCE * r.max(CastPolicy::START_CONTACT_GAP * size);
     let target = (-allowance).min(d0 - allowance);
     let (m1, m2) = (spinless(c.m1), spinless(c.m2));
-    let t_trans = if travel < d0 - target {
+    let t_trans = if c.spin_at_start {
+        // The whole motions, rotation included, down to the same level.
+        if out_of_reach(c, d0, target) {
+            Ok(None)
+        } else {
+            level(c.m1, c.m2, target).map(|t| (t.status != ToiStatus::NoHit).then_some(t.time))
+        }
+    } else if travel < d0 - target {
         Ok(None)
     } else {
         let p = Translating {

@@ -142,6 +142,17 @@ macro_rules! moving_pairs_rapier {
                 &self.options
             }
 
+            /// The bodies the last [`MovingPairs::after_step`] stopped, each with the fraction of
+            /// the step at which it stopped (its pose is its path's pose there: it moved over
+            /// that part of the step and stood still after it).
+            pub fn stops(&self) -> impl Iterator<Item = (RigidBodyHandle, f64)> + '_ {
+                self.bodies
+                    .iter()
+                    .zip(&self.body_handles)
+                    .filter(|(b, _)| b.stopped())
+                    .map(|(b, h)| (*h, b.stop / b.path.dt))
+            }
+
             /// Records the pose of every enabled, awake dynamic or kinematic body: the start of
             /// the step. Call it right before `PhysicsPipeline::step`.
             pub fn before_step(&mut self, bodies: &RigidBodySet) {
@@ -172,6 +183,7 @@ macro_rules! moving_pairs_rapier {
                     return report;
                 }
                 self.gather_bodies(dt, bodies, colliders, &mut report);
+                self.pairs.clear();
                 if report.fast_bodies > 0 {
                     self.gather_colliders(bodies, colliders);
                     self.broad.pairs(&self.bodies, &self.colliders, &mut self.pairs);
