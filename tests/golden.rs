@@ -116,16 +116,31 @@ const FUZZ_CASES: u64 = 40_000;
 /// about the centroid. The constant-spin trackers did not change: when the nlerp clock went
 /// into them, every digest kept its bits with the cast policy's rule switched off (before the
 /// manifold and thickness changes).
+///
+/// Re-recorded with the degenerate starts (a disc centred on a polygon's corner, issue item 4),
+/// change by change, the cases counted against the batch before each:
+/// * a unit normal a rounding short of an edge normal is that edge's (`RoundedPolygon`'s
+///   `phi_range_of_normal`, as its doc said and as a normal a rounding past it already was;
+///   before, the corner before the edge answered with its last point): 182 cases, `concentric`
+///   118, `wild` 13, `thin-ellipse` 12, `random` 12, `extreme-scale` 11, `coincident` 10,
+///   `parry-pair` 6. The same distances to 4.4e-16 (relative); other witnesses where two faces
+///   tie (concentric shapes: the witness on a flat piece now opposite the other shape's point),
+///   and where D' = 0 exactly at a contact at the start (concentric shapes spinning about their
+///   common centre) the rounding of D' at the other witness decides between
+///   `PenetratingAtStart` and the walk out of the contact. Before: `coincident`
+///   0x443C_2C11_9C45_A9EC, `concentric` 0xA4F8_3D5D_CF32_C327, `extreme-scale`
+///   0x6B91_1952_90CA_3A2F, `parry-pair` 0x259C_5AA6_E3F6_B705, `random` 0x2A53_2D34_3FF7_8D97,
+///   `thin-ellipse` 0xE5FC_F22A_CDAB_8388, `wild` 0x2D0D_BEED_B097_8D20.
 const FUZZ_DIGESTS: [(&str, u64); 9] = [
-    ("coincident", 0x443C2C119C45A9EC),
-    ("concentric", 0xA4F83D5DCF32C327),
-    ("extreme-scale", 0x6B91195290CA3A2F),
+    ("coincident", 0x986C90E41B7BAB3A),
+    ("concentric", 0x41628784641D1423),
+    ("extreme-scale", 0xE5489D1B42AABE35),
     ("grazing", 0xB3CC86807F152CB1),
-    ("parry-pair", 0x259C5AA6E3F6B705),
-    ("random", 0x2A532D343FF78D97),
-    ("thin-ellipse", 0xE5FCF22ACDAB8388),
+    ("parry-pair", 0x63C5A118D934EBBB),
+    ("random", 0xDAB658027993FCD1),
+    ("thin-ellipse", 0x9E9B543B08C14BB7),
     ("touching-at-t0", 0x78A5D3EE8943D505),
-    ("wild", 0x2D0DBEEDB0978D20),
+    ("wild", 0xDD2049F0EE37BD0E),
 ];
 
 /// Final-state hash of the rapier scene (re-recorded with issue 17: the CCD casts between its
