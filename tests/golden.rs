@@ -131,13 +131,19 @@ const FUZZ_CASES: u64 = 40_000;
 ///   0x443C_2C11_9C45_A9EC, `concentric` 0xA4F8_3D5D_CF32_C327, `extreme-scale`
 ///   0x6B91_1952_90CA_3A2F, `parry-pair` 0x259C_5AA6_E3F6_B705, `random` 0x2A53_2D34_3FF7_8D97,
 ///   `thin-ellipse` 0xE5FC_F22A_CDAB_8388, `wild` 0x2D0D_BEED_B097_8D20.
+/// * `CustomCurve` delegates `min_radius_of_curvature` (and the new
+///   `min_radius_of_curvature_near`) to its curve, as it delegates the rest: the stationary
+///   distance of a wrapped ellipse called on the wrapper certifies a shallow penetration where it
+///   searched before. 8 cases, `random` 5, `extreme-scale` 2, `concentric` 1: the same distances
+///   to 6.6e-16 (relative), another witness on a tie. Before: `concentric` 0x4162_8784_641D_1423,
+///   `extreme-scale` 0xE548_9D1B_42AA_BE35, `random` 0xDAB6_5802_7993_FCD1.
 const FUZZ_DIGESTS: [(&str, u64); 9] = [
     ("coincident", 0x986C90E41B7BAB3A),
-    ("concentric", 0x41628784641D1423),
-    ("extreme-scale", 0xE5489D1B42AABE35),
+    ("concentric", 0x4B1FC3FEDF49E9CB),
+    ("extreme-scale", 0xE1B6C90A44D9AD8F),
     ("grazing", 0xB3CC86807F152CB1),
     ("parry-pair", 0x63C5A118D934EBBB),
-    ("random", 0xDAB658027993FCD1),
+    ("random", 0xE21E61DF2B13C04D),
     ("thin-ellipse", 0x9E9B543B08C14BB7),
     ("touching-at-t0", 0x78A5D3EE8943D505),
     ("wild", 0xDD2049F0EE37BD0E),
