@@ -16,7 +16,10 @@
 //!   `SmoothDispatcher` against parry's polygon approximations;
 //! * `ccd/resting-sweep`: rapier's CCD sweep (`stop_at_penetration = false`) of three bodies
 //!   already in the pile's floor (`scenes::resting_sweeps`, recorded in the pile), the exact
-//!   shapes against parry's on its stand-ins.
+//!   shapes against parry's on its stand-ins;
+//! * `corner/<case>`: the degenerate starts of `support/corner.rs` (a disc centred on a box's
+//!   corner and its neighbours), one case per function, parry's own cast beside where it has
+//!   the pair.
 //!
 //! Run with `cargo bench --bench toi` (add a filter such as `-- distance` for one kind). The
 //! ratios with the accuracy beside them are printed by `cargo bench --bench ratios`.
@@ -263,9 +266,25 @@ fn bench_resting_sweeps(c: &mut Criterion) {
     g.finish();
 }
 
+fn bench_corner(c: &mut Criterion) {
+    let mut g = c.benchmark_group("corner");
+    short(&mut g);
+    for case in support::corner::cases() {
+        g.bench_function(BenchmarkId::new("ours", &case.name), |b| {
+            b.iter(|| black_box(case.ours()))
+        });
+        if case.has_parry() {
+            g.bench_function(BenchmarkId::new("parry", &case.name), |b| {
+                b.iter(|| black_box(case.parry()))
+            });
+        }
+    }
+    g.finish();
+}
+
 criterion_group! {
     name = benches;
     config = Criterion::default();
-    targets = bench_toi, bench_distance, bench_manifolds, bench_sweep, bench_pile, bench_resting_sweeps
+    targets = bench_toi, bench_distance, bench_manifolds, bench_sweep, bench_pile, bench_resting_sweeps, bench_corner
 }
 criterion_main!(benches);
