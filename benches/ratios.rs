@@ -14,7 +14,8 @@
 //!
 //! Run with `cargo bench --bench ratios` (all sections, a few minutes on two cores), or name
 //! sections: `cargo bench --bench ratios -- classes distance manifolds parry-pairs sweep growth
-//! pile rapier-casts`
+//! pile rapier-casts corner` (`corner`: the degenerate starts of `tests/degenerate_starts.rs`, a
+//! disc centred on a box's corner and its neighbours, with their evaluation counts)
 //! (`classes` runs `classes-native` too; `native` alone runs only it).
 //!
 //! Method: every scenario is timed on its own, for ours and for parry alternately, in several
@@ -711,6 +712,41 @@ fn sweep_tables() {
     }
 }
 
+/// The degenerate starts (`support::corner`): status, evaluations and time of each, parry's own
+/// cast beside where parry has the pair.
+fn corner_table() {
+    println!("\n## Degenerate starts: a shape centred on a polygon's corner, edge or centre\n");
+    println!(
+        "The issue's pathological cast (a unit disc centred on the corner of the unit box, `stop_at_penetration`: 4,002 evaluations, 1.7 ms before the stationary distance's sinusoid bound) and its neighbours, through `shape_time_of_impact` (`time_of_impact` for the curves), window [0, 1]; parry: its `DefaultQueryDispatcher` cast of its `Ball` and `Cuboid`s where it has the pair. Evaluations: pair evaluations of the φ–t tracker, exact distances of the gap tracker.\n"
+    );
+    println!("| case | status | evaluations | ours µs | parry µs | ratio |");
+    println!("|---|---|---:|---:|---:|---:|");
+    for c in support::corner::cases() {
+        let r = c.ours();
+        let (status, evals) = match &r {
+            Ok(r) => (format!("{:?}", r.status), r.cost.evaluations.to_string()),
+            Err(e) => (format!("{e:?}"), "–".into()),
+        };
+        let (ours, parry) = if c.has_parry() {
+            time_contenders(|| c.ours(), || c.parry())
+        } else {
+            (
+                support::timing::time_one(&mut || {
+                    black_box(c.ours()).ok();
+                }),
+                f64::NAN,
+            )
+        };
+        println!(
+            "| {} | {status} | {evals} | {} | {} | {} |",
+            c.name,
+            us(ours),
+            us(parry),
+            fx2(parry / ours)
+        );
+    }
+}
+
 fn main() {
     // `cargo bench` passes `--bench`; arguments select sections.
     let args: Vec<String> = std::env::args().skip(1).filter(|a| !a.starts_with("--")).collect();
@@ -748,6 +784,9 @@ fn main() {
     }
     if want("pile-calls") {
         support::replay::pile_calls_table(400);
+    }
+    if want("corner") {
+        corner_table();
     }
     // A parry cast that never returned may still be spinning on its thread.
     use std::io::Write;

@@ -21,6 +21,9 @@
 //!   through `SmoothDispatcher` against the same bodies as parry's shapes through
 //!   `sweep_time_of_impact`), starting apart with spins up to π/4 a step and beyond, and in
 //!   contact.
+//! * `corner/<case>`: the degenerate starts of `support/corner.rs` (a disc centred on a box's
+//!   corner and its neighbours), one case per function, parry's own cast beside where it has
+//!   the pair.
 //!
 //! Run with `cargo bench --bench toi` (add a filter such as `-- distance` for one kind). The
 //! ratios with the accuracy beside them are printed by `cargo bench --bench ratios`.
@@ -306,9 +309,27 @@ fn bench_rapier_casts(c: &mut Criterion) {
     }
 }
 
+/// The degenerate starts (`support::corner`): one function per case, parry's own cast beside
+/// where it has the pair.
+fn bench_corner(c: &mut Criterion) {
+    let mut g = c.benchmark_group("corner");
+    short(&mut g);
+    for case in support::corner::cases() {
+        g.bench_function(BenchmarkId::new("ours", &case.name), |b| {
+            b.iter(|| black_box(case.ours()))
+        });
+        if case.has_parry() {
+            g.bench_function(BenchmarkId::new("parry", &case.name), |b| {
+                b.iter(|| black_box(case.parry()))
+            });
+        }
+    }
+    g.finish();
+}
+
 criterion_group! {
     name = benches;
     config = Criterion::default();
-    targets = bench_toi, bench_distance, bench_manifolds, bench_sweep, bench_pile, bench_resting_sweeps, bench_rapier_casts
+    targets = bench_toi, bench_distance, bench_manifolds, bench_sweep, bench_pile, bench_resting_sweeps, bench_rapier_casts, bench_corner
 }
 criterion_main!(benches);

@@ -4,7 +4,7 @@
 //! polygon – disc scenarios of the sweep benchmarks, timing, parry's polygonal stand-ins, the
 //! comparison on parry's own shapes ([`native`]), parry's own pairs through the dispatcher
 //! ([`parry_pairs`]), the pile ([`pile`], its tables [`pile_tables`]) and its replays
-//! ([`replay`]).
+//! ([`replay`]), the degenerate starts ([`corner`]).
 //! The files of
 //! `tests/common` it needs are included as they are (`#[path]`):
 //! the reference, the RNG, the scenario generator, the rapier world and its scenes, the resting
@@ -27,6 +27,7 @@ pub mod watched;
 #[path = "../../tests/common/world.rs"]
 pub mod world;
 
+pub mod corner;
 pub mod manifolds;
 pub mod native;
 pub mod parry_pairs;

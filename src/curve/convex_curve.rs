@@ -101,9 +101,9 @@ pub struct SupportJet {
 /// when it does not hold. In short: the *upper bounds* (`bounding_radius`,
 /// `max_radius_of_curvature`, `support_dd_bound`, `support_dd_bound_near`) are what the time of
 /// impact's guard and bounding circles rely on to step over no contact — one too small makes a
-/// cast miss a contact or report a late one; the *lower bound* `min_radius_of_curvature` lets
-/// the stationary distance skip its global search — too large, a penetration is reported
-/// shallower than it is; `eval`'s derivatives steer the solvers and the mass quadrature —
+/// cast miss a contact or report a late one; the *lower bounds* `min_radius_of_curvature` and
+/// `min_radius_of_curvature_near` let the stationary distance skip its global search and bound
+/// it — too large, a penetration is reported shallower than it is; `eval`'s derivatives steer the solvers and the mass quadrature —
 /// wrong, the queries are slower or less accurate (never unbounded: every loop of the crate has
 /// a cap and says when it reached it), and the mass is wrong. No broken contract makes a query
 /// panic, hang or return a NaN.
@@ -175,12 +175,29 @@ pub trait ConvexCurve: Send + Sync + Debug + 'static {
 
     /// A lower bound on the radius of curvature over the whole curve (0 for a curve with sharp
     /// corners; a flat piece counts as infinite). The stationary distance uses it to certify a
-    /// shallow penetration depth without its global search. The default, 0, is always valid.
+    /// shallow penetration depth without its global search, and in the bounds of that search
+    /// (a deep penetration, a disc centred on a polygon's corner: with 0 the search cannot tell
+    /// that the distance is flat over the corner's normals, and runs to its evaluation cap). The
+    /// default, 0, is always valid.
     ///
     /// Checked against the sampled radii. Too large between them: a penetration deeper than
     /// the true smallest radius can be reported shallower (a local maximum certified global).
     fn min_radius_of_curvature(&self) -> f64 {
         0.0
+    }
+
+    /// A lower bound on the radius of curvature over the boundary points whose outward normals
+    /// lie within `half_angle` of the unit vector `m` (0 for a sharp corner among them; a flat
+    /// piece counts as infinite). The stationary distance's global search bounds the distance
+    /// over an arc of normals with it: where the curvature varies (an ellipse) the local bound
+    /// lets it drop the arcs next to a deep maximum at once. The default is
+    /// [`ConvexCurve::min_radius_of_curvature`], always valid when that is.
+    ///
+    /// Checked at the sampled normals over arcs of half-angle 0 and 2π/256 only: too large over
+    /// wider arcs, a penetration can be reported shallower than it is.
+    fn min_radius_of_curvature_near(&self, m: Vector, half_angle: f64) -> f64 {
+        let _ = (m, half_angle);
+        self.min_radius_of_curvature()
     }
 
     /// An upper bound on |h''(ψ)| = |ρ(ψ) − h(ψ)| over all directions, with h the support

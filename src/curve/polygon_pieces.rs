@@ -188,12 +188,14 @@ impl<'a> PolygonPieces<'a> {
         if a == 0.0 || (m - e_prev).length_squared() < SAME_NORMAL_SQ {
             return Some(edge_range((i + n - 1) % n));
         }
+        // (Before the corner's own normals: a normal a hair short of e is e, as one a hair past
+        // e_prev is e_prev.)
+        if a == span || (m - e).length_squared() < SAME_NORMAL_SQ {
+            return Some(edge_range(i));
+        }
         if a < span {
             let phi = self.piece_starts[2 * i] + a * self.scalars.k * self.scalars.corner_scale;
             return Some((phi, phi));
-        }
-        if a == span || (m - e).length_squared() < SAME_NORMAL_SQ {
-            return Some(edge_range(i));
         }
         None
     }
@@ -358,5 +360,40 @@ mod tests {
         }
         assert!(checked > 10_000, "{checked}");
         let _ = ConvexCurve::bounding_radius(&polygons[0]);
+    }
+
+    /// A unit normal within 1e-15 of an edge normal is that edge's normal from either side: its
+    /// range is the edge's whole φ-interval. (Short of the normal, the corner before the edge
+    /// used to answer with its last point: the stationary distance's node then carried F's slope
+    /// from the wrong side of the kink.)
+    #[test]
+    fn a_normal_a_rounding_off_an_edge_normal_is_the_edge() {
+        for p in [
+            RoundedPolygon::regular(4, 1.0, 0.0),
+            RoundedPolygon::regular(7, 1.0, 0.1),
+        ] {
+            let pieces = p.pieces_for_tests();
+            for (i, &e) in p.edge_normals().iter().enumerate() {
+                let edge = (pieces.piece_starts[2 * i + 1], pieces.piece_starts[2 * i + 2]);
+                let a = e.y.atan2(e.x);
+                for m in [e, unit(a - 4e-16), unit(a + 4e-16)] {
+                    if (m - e).length_squared() < SAME_NORMAL_SQ {
+                        assert_eq!(pieces.phi_range_of_normal(m), edge, "edge {i}, {m} against {e}");
+                    }
+                }
+            }
+        }
+        // The box of the degenerate start: its bottom edge's normal as the search computes it.
+        let b = RoundedPolygon::new(
+            &[
+                Vector::new(0.0, 0.0),
+                Vector::new(1.0, 0.0),
+                Vector::new(1.0, 1.0),
+                Vector::new(0.0, 1.0),
+            ],
+            0.0,
+        );
+        let (lo, hi) = b.phi_range_of_normal(unit(1.5 * core::f64::consts::PI));
+        assert!(hi > lo, "({lo}, {hi})");
     }
 }

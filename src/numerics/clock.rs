@@ -94,7 +94,7 @@ impl Clock {
             inv_t: 1.0 / span,
             span,
             half,
-            k: half.tan(),
+            k: libm::tan(half),
         })
     }
 
@@ -115,14 +115,14 @@ impl Clock {
         if w == self.half {
             return 1.0;
         }
-        0.5 + 0.5 * w.tan() / self.k
+        0.5 + 0.5 * libm::tan(w) / self.k
     }
 
     /// The clock's value and derivatives at time `t`.
     #[inline]
     pub(crate) fn jet(&self, t: f64) -> ClockJet {
         let w = self.w(t);
-        let tw = w.tan();
+        let tw = libm::tan(w);
         let sec2 = 1.0 + tw * tw;
         let sigma = if w == -self.half {
             0.0
@@ -146,7 +146,7 @@ impl Clock {
         let w = self.w(ta).abs().max(self.w(tb).abs());
         // At the same |w| on both sides of the middle when the interval straddles it: the
         // derivatives grow with |w|, so the end with the larger |w| bounds them.
-        let tw = w.tan();
+        let tw = libm::tan(w);
         let sec2 = 1.0 + tw * tw;
         let hk = (self.half / self.k).abs();
         let h2 = 4.0 * self.half * self.half;
@@ -161,7 +161,7 @@ impl Clock {
     #[cfg(test)]
     pub(crate) fn time_of_fraction(&self, s: f64) -> f64 {
         let s = s.clamp(0.0, 1.0);
-        let w = ((2.0 * s - 1.0) * self.k).atan();
+        let w = libm::atan((2.0 * s - 1.0) * self.k);
         let u = (0.5 + 0.5 * w / self.half).clamp(0.0, 1.0);
         self.t0 + self.span * u
     }
@@ -182,7 +182,7 @@ impl Clock {
     pub(crate) fn clock_of_path(&self, tau: f64) -> (f64, f64, f64) {
         let x = (2.0 * (tau - self.t0) * self.inv_t - 1.0).clamp(-1.0, 1.0);
         let q = 1.0 + x * x * self.k * self.k;
-        let u = self.t0 + 0.5 * self.span + 0.5 * self.span / self.half * (x * self.k).atan();
+        let u = self.t0 + 0.5 * self.span + 0.5 * self.span / self.half * libm::atan(x * self.k);
         let d1 = self.k / self.half / q;
         let d2 = -4.0 * self.k * self.k * self.k * x / (self.half * self.span * q * q);
         (u, d1, d2)

@@ -41,7 +41,7 @@
 //! steps (a graze that keeps S_n near δ).
 
 use crate::numerics::clock::Clock;
-use crate::numerics::math::{perp, Pose, Real, Vector};
+use crate::numerics::math::{perp, sin_cos, Pose, Real, Vector};
 use crate::query::contact::{contact, Contact, SupportShape};
 use crate::query::path::OnPath;
 use crate::query::toi::{TimeOfImpact, ToiCost, ToiStatus};
@@ -419,7 +419,7 @@ fn pieces(
     mut each: impl FnMut(Real, Real, Real),
 ) -> Real {
     let (theta, dtheta, _) = k.turn(u);
-    let (s, c) = theta.sin_cos();
+    let (s, c) = sin_cos(theta);
     // w = R(−θ) n and its perpendicular, in B's frame.
     let w = Vector::new(c * n.x + s * n.y, -s * n.x + c * n.y);
     let pw = perp(w);

@@ -15,17 +15,58 @@
 //!    theorem applied to the shapes shrunk by rᵢ (a shallow penetration).
 //! 3. **Otherwise** (penetration, or a bad start on a very thin ellipse) a branch and bound over
 //!    the normal angle θ bisects the intervals not yet searched, the specification's "bisection
-//!    of intervals": on an interval of width δ with end values F_a, F_b and slopes −S_a, −S_b,
-//!    F_θθ = −F − ρ₁ − ρ₂ ≤ M := max(0, −(F_a + F_b)/2 + Lδ/2), L = R₁ + R₂ + |q| bounding |F_θ|, so
-//!    F lies below both parabolas F_a − S_a(θ − a) + M(θ − a)²/2 and F_b − S_b(θ − b) + M(θ − b)²/2,
-//!    whose lower envelope has an exact maximum. Intervals whose bound cannot beat the best
-//!    value found (by more than the tolerance) are dropped; an interval with a sign change of S
-//!    gets a local solve. Concave kinks (sharp corners) only lower F, so the bound stays valid.
+//!    of intervals". Intervals whose upper bound on F cannot beat the best value found (by more
+//!    than the tolerance) are dropped; an interval with a sign change of S gets a local solve,
+//!    and is split at its root. The bounds are below ("Bounds on an interval").
+//!
+//! ## Bounds on an interval
+//!
+//! Take an interval [a, b] of θ of width δ < π, with end values F_a, F_b and slopes into it
+//! g_a = F_θ(a⁺), g_b = F_θ(b⁻) (F_θ = −S). Write h₁, h₂ for the support functions of the two
+//! shapes; F(θ) = −h₁(n) − h₂(−n) + (a term linear in n), and h + h'' = ρ (the radius of
+//! curvature at the support point, a measure: a flat piece is an atom), so
+//!
+//! ```text
+//! F_θθ + F = −ρ₁ − ρ₂ ≤ −r,     r = a lower bound on ρ₁ + ρ₂ over the interval's directions.
+//! ```
+//!
+//! A flat piece of object1 (an atom of ρ₁) only makes F_θθ more negative: a concave kink, where
+//! any slope between the two one-sided ones keeps every bound below valid.
+//!
+//! * **Parabolas.** F ≥ F_low := (F_a + F_b)/2 − Lδ/2 on the interval (|F_θ| ≤ L = R₁ + R₂ + |q|,
+//!   the bounding radii and the offset of the origins), so F_θθ ≤ M := max(0, −F_low − r) and F
+//!   lies below both F_a + g_a(θ − a) + M(θ − a)²/2 and F_b + g_b(θ − b) + M(θ − b)²/2, whose
+//!   lower envelope has an exact maximum ([`envelope_max`]). With r the global smallest radii this
+//!   costs nothing; a shape whose curvature varies gets r over the interval's directions
+//!   ([`ConvexCurve::min_radius_of_curvature_near`]) when the first try fails. Where M = 0 the
+//!   envelope is that of the tangent lines, exact at a maximum at an end.
+//! * **Sinusoids.** w = F + r satisfies w'' + w ≤ 0, hence (variation of constants: the
+//!   difference e from the solution with the same value and slope at a has e'' + e ≤ 0, e(a) = 0,
+//!   e'(a) = 0, and e(a + x) = ∫₀ˣ sin(x − s)·(e'' + e)(a + s) ds ≤ 0 for x ≤ π)
+//!
+//!   ```text
+//!   F(a + x) ≤ (F_a + r)·cos x + g_a·sin x − r,    F(b − x) ≤ (F_b + r)·cos x − g_b·sin x − r,
+//!   ```
+//!
+//!   for 0 ≤ x ≤ δ. Where ρ₁ + ρ₂ = r on the interval (a disc against a polygon's corner: its
+//!   support point fixed, F + r a pure sinusoid) these are F itself, and the maximum of their
+//!   lower envelope ([`sine_envelope_max`]) is F's maximum over the interval exactly, across one
+//!   kink too. This is what makes the degenerate starts cheap: a disc of radius R centred on a
+//!   sharp vertex has F ≡ −R over the vertex's whole cone of normals, a flat maximum that the
+//!   parabolas (M ≥ Lδ/2 > 0 there) could only drop in intervals of width about √(tol/L),
+//!   some 10⁵ of them (the evaluation cap ended it, after 1.7 ms); a disc concentric with a
+//!   polygon has its maxima at kinks, which the parabolas bracketed to 1e-6 rad each.
+//!
+//! A node on a flat piece of object1 carries both one-sided slopes (S at each end of the piece:
+//! one more evaluation), and a split at a root found on a flat piece takes the piece's own normal
+//! (not its angle recomputed, which may fall an ulp into the neighbouring corner and carry the
+//! slope of the wrong side): the interval beside a face–point maximum is then bounded by F's own
+//! value and dropped at once, where the slope of the other side kept it open down to 1e-6 rad.
 
 use crate::curve::ConvexCurve;
 use crate::error::{finite, tolerance_ok, AllFinite, QueryError};
 use crate::numerics::angle::{ccw_angle, wrap_phi};
-use crate::numerics::math::{unit, Pose, Vector};
+use crate::numerics::math::{sin_cos, unit, Pose, Vector};
 use crate::numerics::motion::PairFrame;
 use crate::query::pair::PairPoint;
 use crate::query::solver::Solver;
@@ -80,10 +121,10 @@ pub enum DistanceStatus {
     Penetrating,
     /// The evaluation cap (`max_evaluations`) was reached before the branch and bound could
     /// certify its answer: `distance` is the best value found, a lower bound on the signed
-    /// distance, of either sign. It happens for deep overlaps — coincident or concentric shapes,
-    /// a depth comparable to the radii of curvature — where the search's curvature bound is
-    /// loose; the value found was still within 1e-9·s of the true depth in the crate's
-    /// adversarial tests (`tests/adversarial.rs`).
+    /// distance, of either sign. Deep overlaps whose maximum is flat or tied (coincident or
+    /// concentric shapes, a disc centred on a polygon's corner) reached it before the search's
+    /// sinusoid bound (module docs); none of the 336 coincident and concentric pairs of
+    /// `tests/adversarial.rs` does now (13 did). A caller's small `max_evaluations` still can.
     OutOfIterations,
 }
 
@@ -181,8 +222,13 @@ const SPLIT_MARGIN: f64 = 1e-3;
 #[derive(Copy, Clone)]
 struct Node {
     theta: f64,
+    /// The start of object1's φ-range with normal angle θ, and the pair there.
     phi: f64,
     jet: PairPoint,
+    /// S at the end of that range: on a flat piece of object1 F has a concave kink at θ, and
+    /// −S there is its slope from the right (−`jet.side` is the slope from the left); elsewhere
+    /// `jet.side`.
+    side_hi: f64,
 }
 
 /// The signed distance between object1 (`obj1`, any convex curve) and object2 (`obj2`, strictly
@@ -264,12 +310,25 @@ pub(crate) fn stationary_in_frame<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Siz
         }
     }
     // Global branch and bound over θ, the angle of N in object2's frame.
-    let node_at = |sv: &mut Solver<A, B>, theta: f64| -> Option<Node> {
-        let n1 = sv.frame.unrotate(unit(theta));
-        let phi = sv.obj1.phi_range_of_normal(n1).0;
+    // The node at θ whose normal on object1 is n1. On a flat piece, S at its end gives F's slope
+    // from the right (failing that, the slope from the left is a valid bound too: F has a
+    // concave kink there).
+    let node_at = |sv: &mut Solver<A, B>, theta: f64, n1: Vector| -> Option<Node> {
+        let (phi, hi) = sv.obj1.phi_range_of_normal(n1);
         let jet = sv.eval(phi)?;
-        Some(Node { theta, phi, jet })
+        let side_hi = if hi > phi {
+            sv.eval(hi).map_or(jet.side, |j| j.side)
+        } else {
+            jet.side
+        };
+        Some(Node {
+            theta,
+            phi,
+            jet,
+            side_hi,
+        })
     };
+    let normal_at = |theta: f64| frame.unrotate(unit(theta));
     let mut best: Option<(f64, PairPoint)> = local;
     let theta_start = match local {
         Some((_, j)) => j.normal_in_2.y.atan2(j.normal_in_2.x),
@@ -277,12 +336,14 @@ pub(crate) fn stationary_in_frame<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Siz
     };
     let lip = obj1.bounding_radius() + obj2.bounding_radius() + (frame.q - frame.rotate(frame.center1)).length();
     let tol = options.distance_tolerance * size;
+    // ρ₁ + ρ₂ ≥ r_min everywhere (module docs, "Bounds on an interval").
+    let r_min = radius_bound(obj1.min_radius_of_curvature()) + radius_bound(obj2.min_radius_of_curvature());
     const SEEDS: usize = 16;
     // Depth-first search over the intervals between consecutive nodes of a fixed-size stack
     // (no heap allocation): nodes[..n] are sorted by θ and the interval being examined is the
     // last pair. Each split adds one node and each pruned interval removes one, so the stack
     // holds SEEDS + 1 nodes plus the current depth, about 45 for midpoint splits to 1e-14.
-    let first = node_at(&mut sv, theta_start).ok_or(QueryError::Degenerate)?;
+    let first = node_at(&mut sv, theta_start, normal_at(theta_start)).ok_or(QueryError::Degenerate)?;
     let mut nodes = [first; NODE_STACK];
     let mut n = 1;
     for k in 1..=SEEDS {
@@ -290,7 +351,7 @@ pub(crate) fn stationary_in_frame<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Siz
         let node = if k == SEEDS {
             Node { theta: th, ..first }
         } else {
-            node_at(&mut sv, th).ok_or(QueryError::Degenerate)?
+            node_at(&mut sv, th, normal_at(th)).ok_or(QueryError::Degenerate)?
         };
         consider(&mut best, node.phi, &node.jet);
         nodes[n] = node;
@@ -305,15 +366,28 @@ pub(crate) fn stationary_in_frame<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Siz
         }
         let best_v = best.map_or(f64::NEG_INFINITY, |(_, j)| j.fwd);
         let delta = b.theta - a.theta;
-        let m = (-(a.jet.fwd + b.jet.fwd) * 0.5 + lip * delta * 0.5).max(0.0);
-        let ub = envelope_max(a.jet.fwd, -a.jet.side, b.jet.fwd, -b.jet.side, m, delta);
-        if ub <= best_v + tol || delta < MIN_INTERVAL {
+        // Upper bounds on F over the interval (module docs, "Bounds on an interval"), the
+        // cheapest first; F's slopes into it: from the right at a, from the left at b.
+        let (ga, gb) = (-a.side_hi, -b.jet.side);
+        let f_low = (a.jet.fwd + b.jet.fwd) * 0.5 - lip * delta * 0.5;
+        let prune = |ub: f64| ub <= best_v + tol;
+        let parabolas = |r: f64| envelope_max(a.jet.fwd, ga, b.jet.fwd, gb, (-f_low - r).max(0.0), delta);
+        let sinusoids = |r: f64| sine_envelope_max(a.jet.fwd + r, ga, b.jet.fwd + r, gb, delta) - r;
+        let pruned = delta < MIN_INTERVAL || prune(parabolas(r_min)) || {
+            let mid = unit(0.5 * (a.theta + b.theta));
+            let half = 0.5 * delta;
+            let r = (radius_bound(obj1.min_radius_of_curvature_near(frame.unrotate(mid), half))
+                + radius_bound(obj2.min_radius_of_curvature_near(-mid, half)))
+            .max(r_min);
+            (r > r_min && prune(parabolas(r))) || prune(sinusoids(r))
+        };
+        if pruned {
             n -= 1;
             continue;
         }
         // A sign change S(a) < 0 < S(b) holds a local maximum: solve for it.
-        let mut split = 0.5 * (a.theta + b.theta);
-        if a.jet.side < 0.0 && b.jet.side > 0.0 {
+        let mut split = (0.5 * (a.theta + b.theta), None);
+        if a.side_hi < 0.0 && b.jet.side > 0.0 {
             let (pa, mut pb) = (a.phi, b.phi);
             if pb < pa {
                 pb += 2.0 * PI;
@@ -323,11 +397,14 @@ pub(crate) fn stationary_in_frame<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Siz
                 let th = j.normal_in_2.y.atan2(j.normal_in_2.x);
                 let th = a.theta + ccw_angle(unit(a.theta), unit(th));
                 if th > a.theta + SPLIT_MARGIN * delta && th < b.theta - SPLIT_MARGIN * delta {
-                    split = th;
+                    // The node takes the root's own normal: on a flat piece that is the
+                    // piece's normal to the bit, so the node gets both of F's slopes.
+                    split = (th, Some(j.curve1.normal));
                 }
             }
         }
-        let mid = match node_at(&mut sv, split) {
+        let (th, n1) = split;
+        let mid = match node_at(&mut sv, th, n1.unwrap_or_else(|| normal_at(th))) {
             Some(n) => n,
             None => return Err(QueryError::Degenerate),
         };
@@ -383,6 +460,59 @@ pub(crate) fn envelope_max(fa: f64, ga: f64, fb: f64, gb: f64, m: f64, delta: f6
         if x > 0.0 && x < delta {
             best = best.max(env(x));
         }
+    }
+    best
+}
+
+/// A curve's lower bound on its radius of curvature as the bounds take it: a negative or
+/// non-finite one (a curve that breaks its contract) as 0, which is always valid.
+fn radius_bound(r: f64) -> f64 {
+    if r.is_finite() && r > 0.0 {
+        r
+    } else {
+        0.0
+    }
+}
+
+/// Exact maximum over x ∈ [0, δ] (0 < δ < π; ∞ otherwise) of the lower envelope of two
+/// sinusoids, u_a(x) = wa·cos x + pa·sin x (value wa and slope pa at x = 0) and
+/// u_b(x) = wb·cos(δ − x) − pb·sin(δ − x) (value wb and slope pb at x = δ).
+///
+/// The maximum of min(u_a, u_b) over the interval is at an end, at a crossing, or at an interior
+/// maximum of the lower one of the two. Each is A·cos(x − α) with α = atan2(pa, wa) for u_a and
+/// α = δ + atan2(pb, wb) for u_b, so each has at most one stationary point in an interval
+/// shorter than π, and u_a − u_b = P·cos x + Q·sin x (P = wa − wb·cos δ + pb·sin δ,
+/// Q = pa − wb·sin δ − pb·cos δ) vanishes at atan2(−P, Q) + kπ: at most one crossing. The envelope
+/// is evaluated at those points inside the interval and at its ends.
+pub(crate) fn sine_envelope_max(wa: f64, pa: f64, wb: f64, pb: f64, delta: f64) -> f64 {
+    if !(delta > 0.0 && delta < PI) {
+        return f64::INFINITY;
+    }
+    let ua = |x: f64| {
+        let (s, c) = sin_cos(x);
+        wa * c + pa * s
+    };
+    let ub = |x: f64| {
+        let (s, c) = sin_cos(delta - x);
+        wb * c - pb * s
+    };
+    let env = |x: f64| ua(x).min(ub(x));
+    let mut best = env(0.0).max(env(delta));
+    let mut at = |x: f64| {
+        if x > 0.0 && x < delta {
+            best = best.max(env(x));
+        }
+    };
+    at(pa.atan2(wa));
+    at(delta + pb.atan2(wb));
+    let (sd, cd) = sin_cos(delta);
+    let p = wa - wb * cd + pb * sd;
+    let q = pa - wb * sd - pb * cd;
+    if p != 0.0 || q != 0.0 {
+        let x0 = (-p).atan2(q);
+        at(x0);
+        at(x0 + PI);
+        at(x0 - PI);
     }
     best
 }
@@ -505,6 +635,66 @@ mod tests {
                 "({x},{y},{a}): {} vs {best}",
                 r.distance
             );
+        }
+    }
+
+    #[test]
+    fn sine_envelope_max_is_the_envelopes_maximum() {
+        // Against dense sampling of min(u_a, u_b) over random values, slopes and widths: never
+        // below the sampled maximum, and above it by no more than the sampling can miss.
+        let mut seed = 3u64;
+        let mut next = move || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for _ in 0..2000 {
+            let (wa, pa, wb, pb) = (
+                4.0 * next() - 2.0,
+                4.0 * next() - 2.0,
+                4.0 * next() - 2.0,
+                4.0 * next() - 2.0,
+            );
+            let delta = [1e-6, 1e-3, 0.1, 0.4, 1.5, 3.1][(next() * 6.0) as usize];
+            let got = sine_envelope_max(wa, pa, wb, pb, delta);
+            let k = 20_000;
+            let mut sampled = f64::NEG_INFINITY;
+            for i in 0..=k {
+                let x = delta * i as f64 / k as f64;
+                let ua = wa * x.cos() + pa * x.sin();
+                let ub = wb * (delta - x).cos() - pb * (delta - x).sin();
+                sampled = sampled.max(ua.min(ub));
+            }
+            // Between samples the envelope moves by at most its slope (≤ 2√2·2) times half a step.
+            let slack = 6.0 * delta / k as f64 + 1e-14;
+            assert!(got >= sampled - 1e-14, "{wa} {pa} {wb} {pb} {delta}: {got} < {sampled}");
+            assert!(got <= sampled + slack, "{wa} {pa} {wb} {pb} {delta}: {got} > {sampled}");
+        }
+        assert_eq!(sine_envelope_max(1.0, 0.0, 1.0, 0.0, PI), f64::INFINITY);
+    }
+
+    #[test]
+    fn a_disc_centred_on_a_sharp_corner_is_certified_in_few_evaluations() {
+        // F ≡ −R over the corner's whole cone of normals: a flat maximum the sinusoid bound drops
+        // at once (the parabolas ran to the evaluation cap, 4,000, and `OutOfIterations`).
+        let bx = RoundedPolygon::new(
+            &[
+                Vector::new(0.0, 0.0),
+                Vector::new(1.0, 0.0),
+                Vector::new(1.0, 1.0),
+                Vector::new(0.0, 1.0),
+            ],
+            0.0,
+        );
+        for (o2, r) in [
+            (&Ellipse::new(1.0, 1.0) as &dyn ConvexCurve, 1.0),
+            (&BallCurve { radius: 0.3 }, 0.3),
+        ] {
+            for (x, y) in [(1.0, 1.0), (0.0, 0.0), (1.0, 0.0), (0.0, 1.0)] {
+                let res = d(&bx, o2, x, y, 0.0);
+                assert_eq!(res.status, DistanceStatus::Penetrating, "({x}, {y})");
+                assert!((res.distance + r).abs() < 1e-12, "({x}, {y}): {}", res.distance);
+                assert!(res.evaluations <= 40, "({x}, {y}): {} evaluations", res.evaluations);
+            }
         }
     }
 

@@ -17,7 +17,8 @@
 //! * `phi_range_of_normal`, `support_point` (at the grid's normals): an interval of φ within one
 //!   turn, whose point is (as the support point is) as far along the normal as any grid point;
 //! * `min_radius_of_curvature`: finite, ≥ 0, at most the radius of curvature σ/ω at the sampled
-//!   points where the normal turns;
+//!   points where the normal turns; `min_radius_of_curvature_near` the same, at each such point's
+//!   normal over arcs of half-angle 0 and 2π/256;
 //! * for a curve that says it is strictly convex: no flat piece sampled; `support_jet` at each
 //!   sampled normal present, finite, with the support value of the sampled point and ρ ≥ 0;
 //!   `max_radius_of_curvature` finite and at least every sampled ρ; `support_dd_bound` and
@@ -28,7 +29,7 @@
 //! [`BOUND_TOLERANCE`]. What a sample cannot check is
 //! the contract between its points: that the bounds (`bounding_radius`, `max_radius_of_curvature`,
 //! `support_dd_bound`, `support_dd_bound_near`) hold at every φ and direction, that
-//! `min_radius_of_curvature` is a lower bound everywhere, that the derivatives are those of P and
+//! `min_radius_of_curvature` and `min_radius_of_curvature_near` are lower bounds everywhere, that the derivatives are those of P and
 //! N, that nothing changes between the sampled points. What breaks when they do not hold is
 //! stated on each method of [`ConvexCurve`].
 
@@ -322,8 +323,9 @@ fn check_normal_ranges(c: &dyn ConvexCurve, grid: &[Sample], br: f64) -> Result<
     Ok(())
 }
 
-/// The curvature bounds: `min_radius_of_curvature` for every curve; for a strictly convex one
-/// `support_jet`, `max_radius_of_curvature`, `support_dd_bound` and `support_dd_bound_near`.
+/// The curvature bounds: `min_radius_of_curvature` and `min_radius_of_curvature_near` for every
+/// curve; for a strictly convex one `support_jet`, `max_radius_of_curvature`, `support_dd_bound`
+/// and `support_dd_bound_near`.
 fn check_curvature_bounds(c: &dyn ConvexCurve, samples: &[Sample], grid: &[Sample], br: f64) -> Result<(), ShapeError> {
     let tol = CONTRACT_TOLERANCE;
     let min_rho = c.min_radius_of_curvature();
@@ -332,12 +334,24 @@ fn check_curvature_bounds(c: &dyn ConvexCurve, samples: &[Sample], grid: &[Sampl
     }
     for s in samples {
         if let Some(rho) = s.rho {
-            if min_rho > rho * (1.0 + tol) + tol * br {
+            let above_rho = |bound: f64| bound > rho * (1.0 + tol) + tol * br;
+            if above_rho(min_rho) {
                 return Err(broken(
                     "min_radius_of_curvature",
                     "above the radius of curvature σ/ω of a sampled point",
                     s.phi,
                 ));
+            }
+            let n = unit_or_x(s.normal);
+            for half_angle in [0.0, TAU / GRID as f64] {
+                let near = c.min_radius_of_curvature_near(n, half_angle);
+                if !(near >= 0.0) || near.is_infinite() || above_rho(near) {
+                    return Err(broken(
+                        "min_radius_of_curvature_near",
+                        "negative, not finite, or above the radius of curvature σ/ω of a sampled point",
+                        s.phi,
+                    ));
+                }
             }
         }
     }

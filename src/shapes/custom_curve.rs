@@ -191,6 +191,14 @@ impl ConvexCurve for CustomCurve {
         self.curve.max_radius_of_curvature()
     }
     #[inline]
+    fn min_radius_of_curvature(&self) -> f64 {
+        self.curve.min_radius_of_curvature()
+    }
+    #[inline]
+    fn min_radius_of_curvature_near(&self, m: Vector, half_angle: f64) -> f64 {
+        self.curve.min_radius_of_curvature_near(m, half_angle)
+    }
+    #[inline]
     fn support_point(&self, n: Vector) -> Vector {
         self.curve.support_point(n)
     }

@@ -202,30 +202,48 @@ impl ConvexCurve for Ellipse {
     }
 
     #[inline]
+    fn min_radius_of_curvature_near(&self, m: Vector, half_angle: f64) -> f64 {
+        // ρ = a²b²/h³ with h² = a²cos²ψ + b²sin²ψ: ρ is monotone in cos²ψ, so its least value
+        // over an arc of directions is at one of the arc's extremes of cos²ψ. Each is taken as
+        // the pair (cos²ψ, sin²ψ) of one vector, squared components (no 1 − cos²ψ, which
+        // cancels along a thin ellipse's flat sides), and h² as a sum of positive terms: ρ to a
+        // few ulps at every axis ratio.
+        let Some((e1, e2)) = arc_ends(m, half_angle) else {
+            return self.min_radius_of_curvature();
+        };
+        let sq = |e: Vector| (e.x * e.x, e.y * e.y);
+        let ((c1, s1), (c2, s2)) = (sq(e1), sq(e2));
+        let most_cos = if e1.y * e2.y <= 0.0 {
+            (1.0, 0.0)
+        } else if c1 >= c2 {
+            (c1, s1)
+        } else {
+            (c2, s2)
+        };
+        let least_cos = if e1.x * e2.x <= 0.0 {
+            (0.0, 1.0)
+        } else if c1 <= c2 {
+            (c1, s1)
+        } else {
+            (c2, s2)
+        };
+        let (a2, b2) = (self.half_x * self.half_x, self.half_y * self.half_y);
+        // At (c, s) = |e|²·(cos²ψ, sin²ψ): ρ = a²b²·((c + s)/(a²c + b²s))^{3/2}.
+        let rho = |(c, s): (f64, f64)| {
+            let q = (c + s) / (a2 * c + b2 * s);
+            a2 * b2 * q * q.sqrt()
+        };
+        // Rounding moves ρ by a few ulps: a hair below, still a lower bound.
+        (rho(most_cos).min(rho(least_cos)) * (1.0 - 1e-12)).max(self.min_radius_of_curvature())
+    }
+
+    #[inline]
     fn support_dd_bound_near(&self, m: Vector, half_angle: f64) -> f64 {
         // h'' = ρ − h = a²b²/h³ − h decreases with h, so its extremes over an arc of directions
         // are at the arc's extremes of h² = b² + (a² − b²)·cos²ψ, i.e. of cos²ψ.
-        let w = half_angle * (1.0 + 1e-9) + 1e-12;
-        if w.is_nan() || w >= 0.99 {
+        let Some((c_min, c_max)) = cos2_range(m, half_angle) else {
             return self.support_dd_bound();
-        }
-        // The ends of a slightly wider arc, of half-angle asin(w) ≥ w (no trigonometry); it is
-        // shorter than π, so it contains a direction with cos ψ = 0 (sin ψ = 0) exactly when the
-        // ends' x (y) components differ in sign.
-        // Callers pass unit normals: normalise only what is not one already (a length within
-        // 1e-14 of 1 moves cos²ψ by far less than the 1e-12 the arc is widened by).
-        let n2 = m.length_squared();
-        let m = if (n2 - 1.0).abs() <= 1e-14 {
-            m
-        } else {
-            m.normalize_or(Vector::X)
         };
-        let (sw, cw) = (w, (1.0 - w * w).sqrt());
-        let e1 = Vector::new(m.x * cw + m.y * sw, m.y * cw - m.x * sw);
-        let e2 = Vector::new(m.x * cw - m.y * sw, m.y * cw + m.x * sw);
-        let (c1, c2) = (e1.x * e1.x, e2.x * e2.x);
-        let c_max = if e1.y * e2.y <= 0.0 { 1.0 } else { c1.max(c2).min(1.0) };
-        let c_min = if e1.x * e2.x <= 0.0 { 0.0 } else { c1.min(c2) };
         let (a2, b2) = (self.half_x * self.half_x, self.half_y * self.half_y);
         let f = |c2: f64| {
             let h = (b2 + (a2 - b2) * c2).sqrt();
@@ -239,9 +257,46 @@ impl ConvexCurve for Ellipse {
     }
 }
 
+/// The ends of the arc of directions within `half_angle` of the unit vector `m`, widened a hair
+/// against rounding (to a half-angle asin(w) ≥ w, w = `half_angle`·(1 + 1e-9) + 1e-12, with no
+/// trigonometry); `None` for an arc of half-angle 0.99 or more (or NaN): the callers take their
+/// global bounds then. The arc is shorter than π, so it contains a direction with cos ψ = 0
+/// (sin ψ = 0) exactly when the ends' x (y) components differ in sign.
+#[inline]
+fn arc_ends(m: Vector, half_angle: f64) -> Option<(Vector, Vector)> {
+    let w = half_angle * (1.0 + 1e-9) + 1e-12;
+    if w.is_nan() || w >= 0.99 {
+        return None;
+    }
+    // Callers pass unit normals: normalise only what is not one already (a length within
+    // 1e-14 of 1 moves cos²ψ by far less than the 1e-12 the arc is widened by).
+    let n2 = m.length_squared();
+    let m = if (n2 - 1.0).abs() <= 1e-14 {
+        m
+    } else {
+        m.normalize_or(Vector::X)
+    };
+    let (sw, cw) = (w, (1.0 - w * w).sqrt());
+    let e1 = Vector::new(m.x * cw + m.y * sw, m.y * cw - m.x * sw);
+    let e2 = Vector::new(m.x * cw - m.y * sw, m.y * cw + m.x * sw);
+    Some((e1, e2))
+}
+
+/// The least and greatest cos²ψ over the directions ψ within `half_angle` of the unit vector `m`
+/// ([`arc_ends`]).
+#[inline]
+fn cos2_range(m: Vector, half_angle: f64) -> Option<(f64, f64)> {
+    let (e1, e2) = arc_ends(m, half_angle)?;
+    let (c1, c2) = (e1.x * e1.x, e2.x * e2.x);
+    let c_max = if e1.y * e2.y <= 0.0 { 1.0 } else { c1.max(c2).min(1.0) };
+    let c_min = if e1.x * e2.x <= 0.0 { 0.0 } else { c1.min(c2) };
+    Some((c_min, c_max))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+    use core::f64::consts::PI;
 
     #[test]
     fn normal_angle_and_eccentric_anomaly_are_inverse() {
@@ -304,6 +359,54 @@ mod tests {
             assert!((ds - tangent * j.radius_of_curvature).length() < 1e-6 * j.radius_of_curvature.max(1.0));
             let drho = (sp(psi + h).radius_of_curvature - sp(psi - h).radius_of_curvature) / (2.0 * h);
             assert!((drho - j.d_radius_of_curvature).abs() < 1e-5 * (1.0 + drho.abs()));
+        }
+    }
+
+    #[test]
+    fn min_radius_near_is_a_lower_bound_over_its_arc() {
+        // Arcs about random directions, round to 1:1e6 ellipses both ways: ρ sampled densely over
+        // the arc (its ends included) is never below the bound, and the bound is the least sampled
+        // ρ to a hair on short arcs (it is attained at an end or at an axis inside).
+        let mut seed = 0x9E37_79B9_7F4A_7C15u64;
+        let mut next = || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for (a, b) in [
+            (1.0, 1.0),
+            (2.0, 0.5),
+            (0.3, 1.7),
+            (1.0, 1e-3),
+            (1e-6, 1.0),
+            (2.2e-16, 1.4e-4),
+            (1.0, 1e-12),
+        ] {
+            let e = Ellipse::new(a, b);
+            for _ in 0..200 {
+                let psi0 = -PI + 2.0 * PI * next();
+                let half = [0.0, 1e-9, 1e-3, 0.1, 0.5, 0.98][(next() * 6.0) as usize];
+                let bound = e.min_radius_of_curvature_near(Vector::new(psi0.cos(), psi0.sin()), half);
+                let mut least = f64::INFINITY;
+                for k in 0..=400 {
+                    let psi = psi0 - half + 2.0 * half * k as f64 / 400.0;
+                    let rho = e
+                        .support_jet(Vector::new(psi.cos(), psi.sin()))
+                        .unwrap()
+                        .radius_of_curvature;
+                    assert!(
+                        rho >= bound,
+                        "{a}×{b} at {psi} (arc {psi0} ± {half}): ρ {rho} < {bound}"
+                    );
+                    least = least.min(rho);
+                }
+                assert!(bound >= e.min_radius_of_curvature());
+                if half <= 1e-3 {
+                    assert!(
+                        bound >= least * (1.0 - 1e-6),
+                        "{a}×{b} arc {psi0} ± {half}: {bound} vs {least}"
+                    );
+                }
+            }
         }
     }
 

@@ -38,7 +38,7 @@ const HALLEY_MAX_STEP: f64 = 1.0;
 impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
     /// Global stationary distance at t starting from φ: (φ, full jet). The local solve comes
     /// first, as in [`stationary_in_frame`]: a root of S with F > 0 is the global maximum, and its
-    /// jet is kept; otherwise the full search runs.
+    /// jet is kept; otherwise the full search runs, from that root.
     // Cold, out of the step loop (as `finish`).
     #[inline(never)]
     pub(super) fn global_at(&mut self, t: f64, phi: f64, tol: Tol) -> Result<(f64, PairJet), QueryError> {
@@ -56,7 +56,11 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
                 return Ok((p, j));
             }
         }
-        let r = stationary_in_frame(self.obj1, self.obj2, frame, phi, &self.opts.distance)?;
+        // The full search starts its own local solve from the root just found (a penetration: a
+        // local maximum of F ≤ 0, which it certifies or not), not from φ again: the bracket
+        // grown to it would be grown twice (a third of the evaluations of a deep start).
+        let phi0 = local.map_or(phi, |(p, _)| p);
+        let r = stationary_in_frame(self.obj1, self.obj2, frame, phi0, &self.opts.distance)?;
         self.cost.evaluations += r.evaluations;
         self.cost.corrector_iterations += r.newton_iterations;
         self.cost.evaluations += 1;

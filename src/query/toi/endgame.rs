@@ -21,6 +21,15 @@ const FORWARD_NEWTON_STEPS: usize = 8;
 /// Illinois regula falsi iterations between a safe point and one beyond the contact.
 const ILLINOIS_STEPS: usize = 40;
 
+/// Where the walk out of a separating contact at the start ended ([`Tracker::leave_contact`]).
+pub(super) enum Leave {
+    /// At (t, φ, jet): the distance is above the target, or the shapes approach again while
+    /// still in contact.
+    At(f64, f64, PairJet),
+    /// The window ended with the shapes still in contact and separating: the pair at its end.
+    End(PairJet),
+}
+
 impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
     /// From a point (t_b, φ_b) of an aimed step that landed beyond the contact (D < δ), back to
     /// where the order-2 Taylor model of D about it reaches the target (Newton when the model has
@@ -203,20 +212,22 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
 
     /// From a separating contact at t, steps forward until the distance exceeds the target
     /// (returns that point), the shapes start approaching again while still in contact (returns
-    /// that point, distance ≤ target), or the window ends (None).
+    /// that point, distance ≤ target), or the window ends ([`Leave::End`], with the last point
+    /// the walk reached: the window's end, where the answer `NoHit` reports the distance).
     // Cold, out of the step loop (as `finish`).
     #[inline(never)]
-    pub(super) fn leave_contact(
-        &mut self,
-        t: f64,
-        phi: f64,
-        j0: &PairJet,
-    ) -> Result<Option<(f64, f64, PairJet)>, QueryError> {
+    pub(super) fn leave_contact(&mut self, t: f64, phi: f64, j0: &PairJet) -> Result<Leave, QueryError> {
         let walk = LeaveWalk::new(self.t0, self.t1, &self.opts, self.tol_d);
-        walk.run((t, phi, *j0), t, (j0.fwd.v, j0.fwd.t), |&(_, phi, _), t_new| {
+        let mut last = *j0;
+        let left = walk.run((t, phi, *j0), t, (j0.fwd.v, j0.fwd.t), |&(_, phi, _), t_new| {
             let (p2, j2) = self.global_at(t_new, phi, Tol::Fixed(self.side_tol))?;
             self.cost.predictor_steps += 1;
+            last = j2;
             Ok(((t_new, self.rewrap(p2), j2), j2.fwd.v, j2.fwd.t))
+        })?;
+        Ok(match left {
+            Some((t2, phi2, j2)) => Leave::At(t2, phi2, j2),
+            None => Leave::End(last),
         })
     }
 }

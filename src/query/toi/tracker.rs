@@ -4,6 +4,7 @@
 
 use super::circles::{circles_reach, circles_stay_apart};
 use super::corrector::Tol;
+use super::endgame::Leave;
 use super::guard::curve_taylor;
 use super::{TimeOfImpact, ToiCost, ToiStatus, TraceEvent, Tracer, Tracker};
 use crate::curve::ConvexCurve;
@@ -304,12 +305,13 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
             }
             // Separating contact: move on until the distance is above the target.
             match self.leave_contact(t, phi, &j)? {
-                Some((t2, phi2, j2)) => {
+                Leave::At(t2, phi2, j2) => {
                     t = t2;
                     phi = self.rewrap(phi2);
                     j = j2;
                 }
-                None => return Ok(ControlFlow::Break(self.result(ToiStatus::NoHit, self.t1, &j))),
+                // The distance and witnesses at the window's end, where `time` is.
+                Leave::End(j_end) => return Ok(ControlFlow::Break(self.result(ToiStatus::NoHit, self.t1, &j_end))),
             }
             if j.fwd.v <= delta + self.tol_d {
                 // Still in contact and approaching again.
