@@ -145,24 +145,36 @@ pub struct Tracked {
     pub bounding: f64,
 }
 
-/// The radii of [`Tracked`] for `shape`: the distance from its centre of mass to its boundary
-/// (point projection) and to its farthest point.
+/// The radii of [`Tracked`] for `shape`: a lower bound of the distance from its centre of mass
+/// to its boundary, and its farthest point's distance.
+///
+/// The distance from an inner point c to the boundary of a convex shape is the least of its
+/// support function about c, h_c(θ) = max over the shape's points p of (p − c)·(cos θ, sin θ).
+/// h_c changes by at most R·|Δθ| between two directions (R the farthest point's distance), so
+/// its least value over `INRADIUS_SAMPLES` equally spaced directions, less R·π/`INRADIUS_SAMPLES`,
+/// is a lower bound — what the judge needs: two centres closer than the sum of two lower bounds
+/// are two overlapping shapes. (parry's point projection is not used: for an inner point of a
+/// `ConvexPolygon` it answers a point farther than the nearest edge.)
 pub fn radii(shape: &dyn Shape) -> (f64, f64) {
+    const INRADIUS_SAMPLES: usize = 4096;
     let com = shape.mass_properties(1.0).local_com;
-    let inradius = match shape.as_ball() {
-        // A ball's projection of its own centre has no direction.
-        Some(b) => b.radius,
-        None => {
-            let p = shape.project_local_point(com, false);
-            if p.is_inside {
-                (p.point - com).length()
-            } else {
-                0.0
-            }
-        }
-    };
     let sphere = shape.compute_local_bounding_sphere();
-    (inradius, (sphere.center - com).length() + sphere.radius)
+    let bounding = (sphere.center - com).length() + sphere.radius;
+    let inradius = match (shape.as_ball(), shape.as_support_map()) {
+        (Some(b), _) => b.radius,
+        (None, Some(s)) => {
+            let least = (0..INRADIUS_SAMPLES)
+                .map(|k| {
+                    let a = std::f64::consts::TAU * k as f64 / INRADIUS_SAMPLES as f64;
+                    let n = Vector::new(a.cos(), a.sin());
+                    (s.local_support_point(n) - com).dot(n)
+                })
+                .fold(f64::INFINITY, f64::min);
+            (least - bounding * std::f64::consts::PI / INRADIUS_SAMPLES as f64).max(0.0)
+        }
+        (None, None) => 0.0,
+    };
+    (inradius, bounding)
 }
 
 /// The sums of the pass's reports over a run.

@@ -70,6 +70,14 @@ pub const HEAD_ON_SCALES: [f64; 2] = [1.0, 0.4];
 /// Steps of a head-on shot (the bodies start 6 m apart: they meet within the first two).
 pub const HEAD_ON_STEPS: usize = 20;
 
+/// The speed of the slowed head-on shots (m/s): the same shot, every velocity and spin scaled
+/// by `SLOW_SPEED / speed` (the same paths in space, the same poses at contact), which rapier
+/// alone resolves without any CCD — the reference for the energy of a collision as rapier's
+/// solver resolves it.
+pub const SLOW_SPEED: f64 = 1.0;
+/// Steps of a slowed shot (6 m apart at 2 m/s: they meet after about 180).
+pub const SLOW_STEPS: usize = 300;
+
 /// Two bullets shot at each other along the x axis.
 #[derive(Clone, Copy, Debug)]
 pub struct HeadOn {
@@ -82,6 +90,16 @@ pub struct HeadOn {
 }
 
 impl HeadOn {
+    /// The same shot at [`SLOW_SPEED`], its spins scaled alike.
+    pub fn slowed(&self) -> HeadOn {
+        let k = SLOW_SPEED / self.speed;
+        HeadOn {
+            speed: SLOW_SPEED,
+            spins: (self.spins.0 * k, self.spins.1 * k),
+            ..*self
+        }
+    }
+
     pub fn launches(&self) -> [Launch; 2] {
         let body = |family, scale, x: f64, dir: f64, spin, angle| Launch {
             family,
@@ -282,6 +300,8 @@ pub fn plank_shots() -> Vec<PlankShot> {
 pub const BOX_BODIES: usize = 50;
 /// The box's inner half-width (m).
 pub const BOX_HALF: f64 = 8.0;
+/// Half the thickness of the box's walls (m).
+pub const BOX_WALL_HALF: f64 = 0.5;
 /// Steps: 10 s at rapier's 60 Hz.
 pub const BOX_STEPS: usize = 600;
 /// The seed of the bodies' launches.
@@ -313,8 +333,10 @@ pub fn box_launches() -> Vec<Launch> {
 #[derive(Clone, Copy, Debug)]
 pub struct BoxResult {
     pub verdicts: Verdicts,
-    /// Bodies whose centre left the box's inside at some step.
+    /// Bodies whose centre left the box at some step: beyond a wall's outer face.
     pub out_of_box: usize,
+    /// Bodies whose centre entered a wall at some step (past its inner face), out or not.
+    pub in_wall: usize,
     /// A pose or velocity not finite at some step.
     pub nan: bool,
     /// The run panicked (the other figures are those before it).
@@ -330,17 +352,18 @@ pub struct BoxResult {
 /// pass of `options` or rapier alone; a panic is caught and reported.
 pub fn run_box(steps: usize, options: Option<MovingPairsOptions>) -> BoxResult {
     let mut run = Run::new(&box_launches(), 0.0, options);
-    let (h, t) = (BOX_HALF + 0.5, BOX_HALF + 1.0);
+    let (w, h, t) = (BOX_WALL_HALF, BOX_HALF + BOX_WALL_HALF, BOX_HALF + 2.0 * BOX_WALL_HALF);
     for (at, half) in [
-        (Vector::new(0.0, -h), Vector::new(t, 0.5)),
-        (Vector::new(0.0, h), Vector::new(t, 0.5)),
-        (Vector::new(-h, 0.0), Vector::new(0.5, t)),
-        (Vector::new(h, 0.0), Vector::new(0.5, t)),
+        (Vector::new(0.0, -h), Vector::new(t, w)),
+        (Vector::new(0.0, h), Vector::new(t, w)),
+        (Vector::new(-h, 0.0), Vector::new(w, t)),
+        (Vector::new(h, 0.0), Vector::new(w, t)),
     ] {
         run.wall(at, half, 0.0);
     }
     let mut judge = Judge::new(&run);
     let mut out = vec![false; run.bodies.len()];
+    let mut in_wall = vec![false; run.bodies.len()];
     let mut nan = false;
     let outcome = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
         for _ in 0..steps {
@@ -348,7 +371,9 @@ pub fn run_box(steps: usize, options: Option<MovingPairsOptions>) -> BoxResult {
             judge.observe(&run);
             nan |= !run.finite();
             for (k, c) in run.centres().iter().enumerate() {
-                out[k] |= !(c.com.x.abs() < BOX_HALF && c.com.y.abs() < BOX_HALF);
+                let far = c.com.x.abs().max(c.com.y.abs());
+                in_wall[k] |= !(far < BOX_HALF);
+                out[k] |= !(far < BOX_HALF + 2.0 * BOX_WALL_HALF);
             }
         }
     }));
@@ -356,6 +381,7 @@ pub fn run_box(steps: usize, options: Option<MovingPairsOptions>) -> BoxResult {
     BoxResult {
         verdicts: judge.verdicts,
         out_of_box: out.iter().filter(|o| **o).count(),
+        in_wall: in_wall.iter().filter(|o| **o).count(),
         nan,
         panicked: outcome.is_err(),
         step_time: run.step_time,
