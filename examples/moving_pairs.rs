@@ -17,10 +17,13 @@ mod common;
 
 use common::moving_pairs::{Launch, Verdicts};
 use common::moving_scenes::{
-    crossing_shots, head_on_pairs, head_on_shots, pass_options, plank_shots, run_box, run_shot, BoxResult,
-    PlankWay, ShotResult, SLOW_SPEED, SLOW_STEPS, BOX_BODIES, BOX_STEPS, HEAD_ON_STEPS,
+    crossing_shots, head_on_pairs, head_on_shots, pass_options, pile_cost, plank_shots, run_box, run_shot,
+    wall_bounce_energy, BoxResult, PlankWay, ShotResult, BOX_BODIES, BOX_STEPS, HEAD_ON_STEPS, SLOW_SPEED, SLOW_STEPS,
 };
 use std::time::Instant;
+
+/// Steps of the pile's cost measurement.
+const PILE_STEPS: usize = 600;
 
 /// A shot with the pass and with rapier alone.
 struct Both {
@@ -122,6 +125,11 @@ fn main() {
          restitution on a two-point contact (Box2D's: each point that pushed gets the bounce of its own \
          approach velocity), found on flat sides; the pass keeps every velocity)"
     );
+    let (wall_gained, wall_shots, wall_worst) = wall_bounce_energy();
+    println!(
+        "(rapier's own CCD, a bullet of every family at a fixed wall, the same speeds and spins, restitution 1: \
+         energy gained in {wall_gained} of {wall_shots} shots, largest {wall_worst:.6})"
+    );
     let head_through = results.iter().filter(|r| r.pass.through()).count();
     let head_alone = results.iter().filter(|r| r.alone.through()).count();
     let head_nan = results.iter().filter(|r| !r.pass.finite).count();
@@ -132,7 +140,10 @@ fn main() {
     let planks = plank_shots();
     let plank: Vec<Both> = planks.iter().map(|s| both(&s.launches(), 20, 0.5)).collect();
     println!();
-    println!("{:<52} {:>5} {:>12} {:>12}", "other scenes (20 steps each)", "shots", "through/pass", "through/alone");
+    println!(
+        "{:<52} {:>5} {:>12} {:>12}",
+        "other scenes (20 steps each)", "shots", "through/pass", "through/alone"
+    );
     let count = |v: &[Both], f: &dyn Fn(usize) -> bool| {
         let rows: Vec<&Both> = v.iter().enumerate().filter(|(i, _)| f(*i)).map(|(_, r)| r).collect();
         (
@@ -143,7 +154,10 @@ fn main() {
     };
     for &angle in &common::moving_scenes::CROSSING_ANGLES {
         let (n, p, a) = count(&crossing, &|i| crossings[i].angle == angle);
-        println!("{:<52} {n:>5} {p:>12} {a:>12}", format!("a bullet crossing another's path at {angle}°"));
+        println!(
+            "{:<52} {n:>5} {p:>12} {a:>12}",
+            format!("a bullet crossing another's path at {angle}°")
+        );
     }
     for way in [PlankWay::EdgeOn, PlankWay::Broadside] {
         let (n, p, a) = count(&plank, &|i| planks[i].way == way);
@@ -164,7 +178,19 @@ fn main() {
     );
     println!(
         "{:<14} {:>8} {:>10} {:>8} {:>4} {:>4} {:>4} {:>6} {:>10} {:>10} {:>7} {:>7} {:>6}",
-        "", "through", "in contact", "grazing", "out", "wall", "NaN", "panic", "step ms", "pass ms", "share", "stops", "casts"
+        "",
+        "through",
+        "in contact",
+        "grazing",
+        "out",
+        "wall",
+        "NaN",
+        "panic",
+        "step ms",
+        "pass ms",
+        "share",
+        "stops",
+        "casts"
     );
     for (name, r) in [("with the pass", &with), ("rapier alone", &alone)] {
         box_row(name, r);
@@ -173,6 +199,42 @@ fn main() {
         "(through: centre vector reversed within a step, d(k+1)·d(k) < 0, apart at both ends, the centres' \
          path within the sum of the inradii; grazing: within the bounding radii only, near misses included; out: a \
          centre beyond a wall's outer face; wall: a centre past a wall's inner face)"
+    );
+    // The cost where no pair is fast: the mixed pile.
+    let pile = pile_cost(PILE_STEPS);
+    println!();
+    println!(
+        "The pass's cost: the mixed pile (150 bodies, half of them bullets, dropped on the ground), {} steps",
+        pile.steps
+    );
+    println!(
+        "{:<20} {:>6} {:>10} {:>10} {:>7} {:>8}",
+        "steps of", "steps", "step ms", "pass ms", "share", "casts"
+    );
+    for (k, what) in ["pile, no fast body", "pile, fast bodies"].iter().enumerate() {
+        let (step, pass) = (pile.step_time[k].as_secs_f64(), pile.pass_time[k].as_secs_f64());
+        let steps = if k == 0 {
+            pile.steps - pile.steps_with_fast
+        } else {
+            pile.steps_with_fast
+        };
+        println!(
+            "{what:<20} {:>6} {:>10.1} {:>10.2} {:>6.2}% {:>8}",
+            steps,
+            step * 1e3,
+            pass * 1e3,
+            100.0 * pass / step.max(f64::MIN_POSITIVE),
+            if k == 0 { 0 } else { pile.casts }
+        );
+    }
+    println!(
+        "{:<20} {:>6} {:>10.1} {:>10.2} {:>6.1}% {:>8}",
+        "the closed box",
+        BOX_STEPS,
+        with.step_time.as_secs_f64() * 1e3,
+        with.pass_time.as_secs_f64() * 1e3,
+        share(&with),
+        with.totals.casts
     );
     println!();
     println!("(ran in {:.1} s)", t.elapsed().as_secs_f64());

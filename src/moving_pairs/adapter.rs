@@ -19,7 +19,8 @@
 macro_rules! moving_pairs_rapier {
     ($rapier:ident, $dispatcher:ty, $b:ident, $example:literal) => {
         use $crate::__moving_pairs::{
-            sensor_crossing, Broad, CastOutcome, PairCast, PassBody, PassCollider, PassPair, Schedule, StepPath,
+            may_be_fast, sensor_crossing, Broad, CastOutcome, PairCast, PassBody, PassCollider, PassPair, Schedule,
+            StepPath,
         };
         use $crate::{MovingPairsOptions, MovingPairsReport, PairScope, PassStatus};
         use $rapier::dynamics::{IntegrationParameters, RigidBody, RigidBodyHandle, RigidBodySet};
@@ -82,6 +83,8 @@ macro_rules! moving_pairs_rapier {
             pairs: Vec<PassPair>,
             broad: Broad,
             schedule: Schedule,
+            /// Each collider's CCD thickness by its handle's index: (generation, shape, thickness).
+            thickness_cache: Vec<(u32, usize, f64)>,
         }
 
         /// The casts of the pass: the shapes of the colliders, the dispatcher.
@@ -134,6 +137,7 @@ macro_rules! moving_pairs_rapier {
                     pairs: Vec::new(),
                     broad: Broad::default(),
                     schedule: Schedule::default(),
+                    thickness_cache: Vec::new(),
                 }
             }
 
@@ -223,6 +227,9 @@ macro_rules! moving_pairs_rapier {
             ) {
                 self.bodies.clear();
                 self.body_handles.clear();
+                // First the screen: the paths are built only when a body of the scope may be
+                // fast (`may_be_fast`); a step with none costs a pose comparison a body.
+                let mut any = false;
                 for &(h, start) in &self.starts {
                     let Some(rb) = bodies.get(h).filter(|rb| rb.is_enabled() && !rb.is_fixed()) else {
                         continue;
@@ -231,6 +238,28 @@ macro_rules! moving_pairs_rapier {
                         continue;
                     }
                     report.moving_bodies += 1;
+                    if !any && self.in_scope(rb) {
+                        let thickness = Self::thickness(&mut self.thickness_cache, rb, colliders);
+                        any = may_be_fast(
+                            &$b::pose64(&start),
+                            &$b::pose64(rb.position()),
+                            $b::vector64(rb.local_center_of_mass()),
+                            $b::real64(rb.angvel()) * dt,
+                            $b::real64(rb.mass_properties().max_extent()),
+                            self.options.fast_fraction * thickness,
+                        );
+                    }
+                }
+                if !any {
+                    return;
+                }
+                for &(h, start) in &self.starts {
+                    let Some(rb) = bodies.get(h).filter(|rb| rb.is_enabled() && !rb.is_fixed()) else {
+                        continue;
+                    };
+                    if *rb.position() == start {
+                        continue;
+                    }
                     let path = StepPath::new(
                         &$b::pose64(&start),
                         &$b::pose64(rb.position()),
@@ -244,21 +273,38 @@ macro_rules! moving_pairs_rapier {
                         continue;
                     };
                     let reach = $b::real64(rb.mass_properties().max_extent());
-                    let fast = self.in_scope(rb) && {
-                        let thickness = rb
-                            .colliders()
-                            .iter()
-                            .filter_map(|ch| colliders.get(*ch))
-                            .filter(|co| co.is_enabled())
-                            .map(|co| $b::real64(co.shape().ccd_thickness()))
-                            .fold(f64::INFINITY, f64::min);
-                        path.max_point_travel(reach) > self.options.fast_fraction * thickness
-                    };
+                    let fast = self.in_scope(rb)
+                        && path.max_point_travel(reach)
+                            > self.options.fast_fraction * Self::thickness(&mut self.thickness_cache, rb, colliders);
                     report.fast_bodies += usize::from(fast);
                     self.bodies
                         .push(PassBody::new(path, fast, rb.is_dynamic(), reach));
                     self.body_handles.push(h);
                 }
+            }
+
+            /// The thinnest `Shape::ccd_thickness` of the body's enabled colliders, each kept
+            /// in a cache by collider (its handle and shape: a collider whose shape was
+            /// replaced is measured again) — a user curve's thickness takes an integral.
+            fn thickness(cache: &mut Vec<(u32, usize, f64)>, rb: &RigidBody, colliders: &ColliderSet) -> f64 {
+                let mut thinnest = f64::INFINITY;
+                for ch in rb.colliders() {
+                    let Some(co) = colliders.get(*ch).filter(|co| co.is_enabled()) else {
+                        continue;
+                    };
+                    let (index, generation) = ch.into_raw_parts();
+                    let shape = co.shape() as *const dyn $rapier::geometry::Shape as *const u8 as usize;
+                    let slot = index as usize;
+                    if cache.len() <= slot {
+                        cache.resize(slot + 1, (u32::MAX, 0, 0.0));
+                    }
+                    let cached = &mut cache[slot];
+                    if cached.0 != generation || cached.1 != shape {
+                        *cached = (generation, shape, $b::real64(co.shape().ccd_thickness()));
+                    }
+                    thinnest = thinnest.min(cached.2);
+                }
+                thinnest
             }
 
             /// The enabled colliders of the moving bodies, with their swept boxes.

@@ -69,7 +69,7 @@ impl Broad {
                 }
             }
         }
-        out.sort_unstable_by(|p, q| (p.a, p.b).cmp(&(q.a, q.b)));
+        out.sort_unstable_by_key(|p| (p.a, p.b));
     }
 }
 

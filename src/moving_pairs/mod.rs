@@ -40,7 +40,7 @@ pub use report::{MovingPairsReport, PassStatus};
 #[doc(hidden)]
 pub mod core {
     pub use super::broad::Broad;
-    pub use super::path::StepPath;
+    pub use super::path::{may_be_fast, StepPath};
     pub use super::records::{PassBody, PassCollider, PassPair};
     pub use super::schedule::{sensor_crossing, CastOutcome, PairCast, Schedule};
     pub use parry2d_f64::math::Pose;

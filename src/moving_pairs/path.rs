@@ -128,6 +128,30 @@ impl StepPath {
     }
 }
 
+/// Whether a body may be fast: false only when every point within `reach` of its centre of
+/// mass moves at most `limit` on the path [`StepPath::new`] would build from `start` to `end`
+/// (`spin_dt`: its angular velocity times the step), decided without building it.
+///
+/// The path's centre travels |c₁ − c₀| and it turns by Δθ, the representative of the rotation
+/// q = R₁R₀⁻¹ nearest to ω·dt·s (s ≤ 1). With q's real part positive its angle lies within
+/// (−π/2, π/2), |angle| ≤ (π/2)·|Im q|; with |ω·dt| < π/2 too, the nearest representative is the
+/// angle itself (they differ by less than π). The bound is then
+/// |c₁ − c₀| + reach·min((π/2)·|Im q|, 2) ≥ [`StepPath::max_point_travel`], less 10⁻⁹ of itself
+/// for rounding; otherwise the body may be fast.
+pub fn may_be_fast(start: &Pose, end: &Pose, local_com: Vector, spin_dt: f64, reach: f64, limit: f64) -> bool {
+    let q = end.rotation * start.rotation.inverse();
+    if !(q.re > 0.0 && spin_dt.abs() < 0.5 * core::f64::consts::PI) {
+        return true;
+    }
+    let shift = (*end * local_com - *start * local_com).length();
+    let bound = shift + reach * (0.5 * core::f64::consts::PI * q.im.abs()).min(2.0);
+    // Not provably slow (a NaN included): may be fast.
+    !matches!(
+        (bound * (1.0 + 1e-9)).partial_cmp(&limit),
+        Some(core::cmp::Ordering::Less | core::cmp::Ordering::Equal)
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -160,6 +184,30 @@ mod tests {
         let end = Pose::new(Vector::new(0.5, 0.0), 1.0);
         let p = StepPath::new(&start, &end, Vector::ZERO, Vector::new(300.0, 0.0), 600.0, dt).unwrap();
         assert!((p.turn() - 1.0).abs() < 1e-12);
+    }
+
+    /// The screen never calls a body slow that its path calls fast.
+    #[test]
+    fn the_screen_never_misses_a_fast_body() {
+        let mut rng = crate::numerics::test_rng::Lcg(11);
+        let dt = 1.0 / 60.0;
+        let mut fast = 0;
+        for _ in 0..20_000 {
+            let start = Pose::new(
+                Vector::new(rng.range(-5.0, 5.0), rng.range(-5.0, 5.0)),
+                rng.range(-3.0, 3.0),
+            );
+            let v = Vector::new(rng.range(-3.0, 3.0), rng.range(-3.0, 3.0));
+            let omega = rng.range(-120.0, 120.0);
+            let com = Vector::new(rng.range(-0.2, 0.2), rng.range(-0.2, 0.2));
+            let end = NonlinearRigidMotion::new(start, com, v, omega).position_at_time(dt);
+            let (reach, limit) = (rng.range(0.1, 2.0), rng.range(0.0, 0.2));
+            let p = StepPath::new(&start, &end, com, v, omega, dt).unwrap();
+            let is_fast = p.max_point_travel(reach) > limit;
+            fast += usize::from(is_fast);
+            assert!(!is_fast || may_be_fast(&start, &end, com, omega * dt, reach, limit));
+        }
+        assert!(fast > 1000 && fast < 19_000, "{fast}");
     }
 
     /// Bad input gives no path, never NaN.

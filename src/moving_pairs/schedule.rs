@@ -90,10 +90,8 @@ impl Schedule {
             return;
         };
         self.build(bodies.len(), colliders, pairs);
-        for k in 0..pairs.len() {
-            if pairs[k].solid {
-                pairs[k].time = cast_pair(&pairs[k], bodies, colliders, 0.0, dt, caster, report);
-            }
+        for p in pairs.iter_mut().filter(|p| p.solid) {
+            p.time = cast_pair(p, bodies, colliders, 0.0, dt, caster, report);
         }
         let bound = 2 * pairs.len() + bodies.len() + 1;
         for _ in 0..bound {

@@ -239,7 +239,9 @@ impl Run {
     pub fn wall(&mut self, at: Vector, half: Vector, friction: f64) {
         self.world.insert(
             RigidBodyBuilder::fixed().translation(at),
-            ColliderBuilder::cuboid(half.x, half.y).restitution(1.0).friction(friction),
+            ColliderBuilder::cuboid(half.x, half.y)
+                .restitution(1.0)
+                .friction(friction),
         );
     }
 
@@ -273,7 +275,11 @@ impl Run {
             .map(|t| {
                 let rb = &self.world.bodies[t.body];
                 let inv_i = rb.mass_properties().local_mprops.inv_principal_inertia;
-                let spin = if inv_i > 0.0 { rb.angvel() * rb.angvel() / inv_i } else { 0.0 };
+                let spin = if inv_i > 0.0 {
+                    rb.angvel() * rb.angvel() / inv_i
+                } else {
+                    0.0
+                };
                 0.5 * (rb.mass() * rb.linvel().length_squared() + spin)
             })
             .sum()

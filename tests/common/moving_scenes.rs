@@ -260,7 +260,11 @@ impl PlankShot {
             family: Family::Plank,
             scale: 1.0,
             position: Vector::new(if self.way == PlankWay::EdgeOn { 4.5 } else { 3.0 }, 0.0),
-            angle: if self.way == PlankWay::EdgeOn { 0.0 } else { std::f64::consts::FRAC_PI_2 },
+            angle: if self.way == PlankWay::EdgeOn {
+                0.0
+            } else {
+                std::f64::consts::FRAC_PI_2
+            },
             velocity: Vector::new(-self.plank_speed, 0.0),
             spin: 0.0,
             ccd: false,
@@ -351,7 +355,18 @@ pub struct BoxResult {
 /// Runs the box for `steps` steps (frictionless, restitution 1, walls 1 m thick), with the
 /// pass of `options` or rapier alone; a panic is caught and reported.
 pub fn run_box(steps: usize, options: Option<MovingPairsOptions>) -> BoxResult {
+    run_box_with(steps, options, &|_| {})
+}
+
+/// [`run_box`] in a world that `setup` prepares first (`crates/parallel-tests`: rapier's
+/// thread pool).
+pub fn run_box_with(
+    steps: usize,
+    options: Option<MovingPairsOptions>,
+    setup: &dyn Fn(&mut super::world::World),
+) -> BoxResult {
     let mut run = Run::new(&box_launches(), 0.0, options);
+    setup(&mut run.world);
     let (w, h, t) = (BOX_WALL_HALF, BOX_HALF + BOX_WALL_HALF, BOX_HALF + 2.0 * BOX_WALL_HALF);
     for (at, half) in [
         (Vector::new(0.0, -h), Vector::new(t, w)),
@@ -371,9 +386,11 @@ pub fn run_box(steps: usize, options: Option<MovingPairsOptions>) -> BoxResult {
             judge.observe(&run);
             nan |= !run.finite();
             for (k, c) in run.centres().iter().enumerate() {
+                // A NaN centre counts as in a wall and out.
                 let far = c.com.x.abs().max(c.com.y.abs());
-                in_wall[k] |= !(far < BOX_HALF);
-                out[k] |= !(far < BOX_HALF + 2.0 * BOX_WALL_HALF);
+                let within = |h: f64| far.partial_cmp(&h) == Some(std::cmp::Ordering::Less);
+                in_wall[k] |= !within(BOX_HALF);
+                out[k] |= !within(BOX_HALF + 2.0 * BOX_WALL_HALF);
             }
         }
     }));
@@ -397,4 +414,91 @@ pub fn pass_options() -> MovingPairsOptions {
         scope: PairScope::Bullets,
         ..MovingPairsOptions::default()
     }
+}
+
+// ---------------------------------------------------------------------------------------------
+// References: the pass's cost where no pair is fast; rapier's own CCD bounce
+// ---------------------------------------------------------------------------------------------
+
+/// The pass's cost in the mixed pile of `scenes.rs` (150 bodies dropped on the ground, half of
+/// them bullets), where no two bodies move fast at each other.
+#[derive(Clone, Copy, Debug)]
+pub struct PileCost {
+    pub steps: usize,
+    /// Time in `PhysicsPipeline::step` and in the pass's two calls, over the steps where the
+    /// pass found no fast body (`[0]`) and where it found one (`[1]`).
+    pub step_time: [Duration; 2],
+    pub pass_time: [Duration; 2],
+    /// Steps where the pass found a fast body, and its casts over the run.
+    pub steps_with_fast: usize,
+    pub casts: usize,
+}
+
+/// Steps the mixed pile with the pass (`SmoothDispatcher` as the narrow phase), timing the
+/// step and the pass apart.
+pub fn pile_cost(steps: usize) -> PileCost {
+    use super::scenes::mixed_pile;
+    use super::world::{World, GRAVITY};
+    use smooth_ccd2d::{MovingPairs, SmoothDispatcher};
+    use std::time::Instant;
+    let mut world = World::new(NarrowPhase::with_query_dispatcher(SmoothDispatcher::default()));
+    mixed_pile(&mut world);
+    let mut pass = MovingPairs::new(pass_options());
+    let mut cost = PileCost {
+        steps,
+        step_time: [Duration::ZERO; 2],
+        pass_time: [Duration::ZERO; 2],
+        steps_with_fast: 0,
+        casts: 0,
+    };
+    for _ in 0..steps {
+        let t0 = Instant::now();
+        pass.before_step(&world.bodies);
+        let t1 = Instant::now();
+        world.step(GRAVITY, &());
+        let t2 = Instant::now();
+        let report = pass.after_step(&world.params, &mut world.bodies, &mut world.colliders, &(), &());
+        let t3 = Instant::now();
+        let fast = usize::from(report.fast_bodies > 0);
+        cost.step_time[fast] += t2 - t1;
+        cost.pass_time[fast] += (t1 - t0) + (t3 - t2);
+        cost.steps_with_fast += fast;
+        cost.casts += report.casts;
+    }
+    cost
+}
+
+/// rapier's own CCD on the head-on speeds and spins: one bullet of every family shot at a fixed
+/// 2 m thick wall (restitution 1, friction 0.5, 20 steps), rapier clamping it at its impact and
+/// its solver resolving the contact at the next step — as the pass leaves a pair. Returns how
+/// many shots ended with more kinetic energy than they started with, of how many, and the
+/// largest ratio after over before.
+pub fn wall_bounce_energy() -> (usize, usize, f64) {
+    let (mut gained, mut total, mut worst) = (0, 0, 0.0f64);
+    for family in Family::ALL {
+        for &speed in &HEAD_ON_SPEEDS {
+            for &(spin, _) in &HEAD_ON_SPINS {
+                let launch = Launch {
+                    family,
+                    scale: 1.0,
+                    position: Vector::new(-3.0, 0.0),
+                    angle: 0.37 * total as f64 % 3.1,
+                    velocity: Vector::new(speed, 0.0),
+                    spin,
+                    ccd: true,
+                };
+                let mut run = Run::new(&[launch], 0.5, None);
+                run.wall(Vector::new(3.0, 0.0), Vector::new(1.0, 20.0), 0.5);
+                let e0 = run.energy();
+                for _ in 0..HEAD_ON_STEPS {
+                    run.step();
+                }
+                let ratio = run.energy() / e0;
+                total += 1;
+                gained += usize::from(ratio > 1.0 + 1e-9);
+                worst = worst.max(ratio);
+            }
+        }
+    }
+    (gained, total, worst)
 }
