@@ -122,8 +122,9 @@ fn main() {
     println!(
         "(E1/E0: kinetic energy after over before; slowed: the same shots at {SLOW_SPEED} m/s, spins scaled alike, \
          in rapier alone, which needs no CCD there — rapier's solver on the same collision. A gain is rapier's \
-         restitution on a two-point contact (Box2D's: each point that pushed gets the bounce of its own \
-         approach velocity), found on flat sides; the pass keeps every velocity)"
+         restitution on a contact of two rows (Box2D's: each point that pushed gets the bounce of its own \
+         approach velocity): two points where flat sides meet, or the exact point and a core contact \
+         (docs/rapier.md); the pass keeps every velocity)"
     );
     let (wall_gained, wall_shots, wall_worst) = wall_bounce_energy();
     println!(

@@ -12,19 +12,6 @@
 //!   spin carries away from a wall while its centre moves into the wall is then stopped by the
 //!   solver, where a one-point manifold would leave the approach to the CCD alone.
 //!
-//! # Impacts
-//!
-//! The core contacts join a pair's manifold from the second step of a contact on: a manifold
-//! made while the previous step's had no point (a new contact: an impact) holds the exact points
-//! alone. rapier's restitution (Box2D's: after the substeps, each contact point that pushed is
-//! given the bounce of its own approach velocity) conserves energy on one point, but on two rows
-//! of one contact — the exact point and a core's, with different lever arms — it adds energy to
-//! a spinning body at every bounce (two spinning ellipses with restitution 1 gained 40 % in one
-//! head-on collision). A contact that lasts, where a spin can carry the one point away from a
-//! wall while the centre moves into it, gets the core contacts from its second step on; the
-//! step between is the CCD's, whose start-contact rule keeps a core off every target
-//! ([`super::rapier_rule`]).
-//!
 //! Each radius is exact for the shapes the contact query reads (polygons, discs, ellipses and
 //! `CapsuleEllipse`s): the inradius about the centroid in closed form.
 

@@ -367,9 +367,6 @@ impl SmoothDispatcher {
             }
             return true;
         }
-        // A lasting contact (the previous step's manifold had a point) gets the core contacts;
-        // a new one — an impact — is solved on its exact points alone (`core_disc`, "impacts").
-        let lasting = !manifold.points.is_empty();
         let hint = Some(manifold.local_n1).filter(|n| self.warm_start && n.is_finite() && *n != Vector::ZERO);
         let Some(c) = exact_contact_of(s1, s2, pos12, hint) else {
             return false;
@@ -387,15 +384,12 @@ impl SmoothDispatcher {
                         pos12,
                         &c,
                         core_contacts(s1, s2, pos12, &c),
-                        lasting && !manifold.points.is_empty(),
+                        !manifold.points.is_empty(),
                         m,
                     )
             }
             // One core, with the exact points (a part of a composite shape).
-            None => {
-                let core = core_contact(s1, s2, pos12, &c).filter(|_| lasting);
-                manifold_from_contact(pos12, &c, core, prediction, manifold)
-            }
+            None => manifold_from_contact(pos12, &c, core_contact(s1, s2, pos12, &c), prediction, manifold),
         }
     }
 }
