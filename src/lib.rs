@@ -32,6 +32,7 @@
 mod curve;
 mod dispatcher;
 mod error;
+mod moving_pairs;
 mod numerics;
 mod parry_shape;
 mod query;
@@ -40,6 +41,11 @@ mod shapes;
 pub use curve::{ConvexCurve, CurvePoint, SupportJet};
 pub use dispatcher::{shape_time_of_impact, CastPolicy, SmoothDispatcher};
 pub use error::{QueryError, ShapeError, MAX_LENGTH, MAX_VERTICES, MIN_LENGTH};
+#[doc(hidden)]
+pub use moving_pairs::core as __moving_pairs;
+#[cfg(feature = "rapier")]
+pub use moving_pairs::MovingPairs;
+pub use moving_pairs::{MovingPairsOptions, MovingPairsReport, PairScope, PassStatus};
 pub use numerics::angle::wrap_phi;
 pub use numerics::jet::{Dual2, Jet2, JetVec};
 pub use numerics::motion::PairFrame;

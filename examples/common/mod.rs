@@ -12,6 +12,10 @@ pub mod appendix_d;
 pub mod ccd_judge;
 #[path = "../../tests/common/ccd_scenes.rs"]
 pub mod ccd_scenes;
+#[path = "../../tests/common/moving_pairs.rs"]
+pub mod moving_pairs;
+#[path = "../../tests/common/moving_scenes.rs"]
+pub mod moving_scenes;
 #[path = "../../tests/common/reference.rs"]
 pub mod reference;
 #[path = "../../tests/common/resting.rs"]

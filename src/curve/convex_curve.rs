@@ -251,23 +251,36 @@ fn default_phi_range_of_normal<C: ConvexCurve + ?Sized>(c: &C, n: Vector) -> (f6
             a
         }
     };
-    // lo: first φ with turn(φ) >= target; hi: last φ with turn(φ) <= target.
-    let bisect = |pred: &dyn Fn(f64) -> bool| {
-        let (mut a, mut b) = (-PI, PI);
-        for _ in 0..NORMAL_BISECTIONS {
-            let m = 0.5 * (a + b);
-            if pred(m) {
-                b = m;
-            } else {
-                a = m;
-            }
-        }
-        0.5 * (a + b)
-    };
     if target == 0.0 {
         return (-PI, -PI);
     }
-    let lo = bisect(&|phi| turn(phi) >= target);
-    let hi = bisect(&|phi| turn(phi) > target);
+    // lo: first φ with turn(φ) >= target; hi: last φ with turn(φ) <= target (the first with
+    // turn(φ) > target). The two bisections share an evaluation wherever their midpoints agree
+    // (until a midpoint's turn equals the target, on a flat piece), and a midpoint met again
+    // reuses its value: the answers of two separate bisections, with about half the
+    // evaluations (`eval` is a user's, and may be costly).
+    let (mut lo, mut hi) = ((-PI, PI), (-PI, PI));
+    let mut last = (f64::NAN, 0.0);
+    let mut turn_at = |phi: f64| {
+        if phi != last.0 {
+            last = (phi, turn(phi));
+        }
+        last.1
+    };
+    for _ in 0..NORMAL_BISECTIONS {
+        let m = 0.5 * (lo.0 + lo.1);
+        if turn_at(m) >= target {
+            lo.1 = m;
+        } else {
+            lo.0 = m;
+        }
+        let m = 0.5 * (hi.0 + hi.1);
+        if turn_at(m) > target {
+            hi.1 = m;
+        } else {
+            hi.0 = m;
+        }
+    }
+    let (lo, hi) = (0.5 * (lo.0 + lo.1), 0.5 * (hi.0 + hi.1));
     (lo, hi.max(lo))
 }

@@ -1,14 +1,14 @@
 //! `SmoothDispatcher::cast_shapes_nonlinear`: every pair of convex shapes the dispatcher can
 //! convert gets the crate's exact time of impact ([`route_cast`]) — the φ–t tracker when one side
 //! is strictly convex, the gap tracker otherwise, the half-space cast — with the
-//! [`CastPolicy`] applied (rapier's clamp path and start-contact rule); composites are decomposed
+//! [`crate::CastPolicy`] applied (rapier's clamp path and start-contact rule); composites are decomposed
 //! with this dispatcher inside, and the shapes it cannot convert go to parry.
 
 use super::composite::composite_cast_nonlinear;
 use super::input_guard;
 use super::parry_fallback::parry_cast_nonlinear;
 use super::parry_fallback::parry_nonlinear_without_stop;
-use super::rapier_rule::{in_contact, out_of_reach, rapier_path, start_contact, start_contact_answer, CastPolicy};
+use super::rapier_rule::{in_contact, out_of_reach, rapier_path, start_contact, start_contact_answer};
 use super::route::{curves_toi, pair_distance, route_cast, CurveOf, Route, RouteScratch};
 use super::support_shape::{exact_contact_of, support_shape, SupportScratch};
 use super::SmoothDispatcher;
@@ -35,6 +35,9 @@ pub(crate) struct NonlinearCast<'a> {
     pub t0: Real,
     pub t1: Real,
     pub stop: bool,
+    /// Rule 3 of `rapier_rule` on the full motions, rotation included
+    /// ([`crate::CastPolicy::RapierConstantSpin`]).
+    pub spin_at_start: bool,
 }
 
 /// parry's hit for this crate's answer.
@@ -130,7 +133,7 @@ pub fn shape_time_of_impact(
 impl SmoothDispatcher {
     /// The nonlinear cast (module docs).
     pub(crate) fn nonlinear_cast(&self, c: &NonlinearCast) -> Result<Option<ShapeCastHit>, Unsupported> {
-        if self.cast_policy == CastPolicy::Rapier {
+        if self.cast_policy.is_rapier() {
             // rapier's rules place points in the world frame (a body's core): the pair at the
             // origin, and rates far outside the normal range on a time scale where they are
             // about 1 (`query::time_scale`), so that neither the place nor the time scale of
@@ -183,13 +186,13 @@ impl SmoothDispatcher {
 
     /// The nonlinear cast of `c` as it is (module docs).
     fn nonlinear_cast_here(&self, c: &NonlinearCast) -> Result<Option<ShapeCastHit>, Unsupported> {
-        let rapier = self.cast_policy == CastPolicy::Rapier;
+        let rapier = self.cast_policy.is_rapier();
         let mut opts = ToiOptions {
             stop_at_penetration: c.stop,
             ..self.toi_options
         };
         if rapier {
-            opts = rapier_path(c, &opts);
+            opts = rapier_path(c, &opts, self.cast_policy);
         }
         // The start-contact rule of rapier's CCD applies to solid bodies.
         let rule = Rules {

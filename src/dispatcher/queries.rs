@@ -245,6 +245,7 @@ impl QueryDispatcher for SmoothDispatcher {
             t0: start_time,
             t1: end_time,
             stop: stop_at_penetration,
+            spin_at_start: self.cast_policy == super::CastPolicy::RapierConstantSpin,
         };
         self.nonlinear_cast(&cast)
     }

@@ -32,6 +32,15 @@
 //!    [`CastPolicy::START_NUDGE`] of the window after the start (rapier would discard the start
 //!    itself), or no hit.
 //!
+//! With [`CastPolicy::RapierConstantSpin`] (the moving-pairs pass's casts), rule 1 takes
+//! parry's constant-spin path, and rule 3 measures the deepening on the *whole* motions,
+//! rotation included, rather than on the translation alone: the pass puts a body it stops on
+//! that path, whose spin is the solver's own spin, so a contact the solver sees leaving is one
+//! the rule sees leaving too (the freeze described below comes from the nlerp path turning the
+//! other way, which this policy never takes). Measured on the translation alone, two spinning
+//! bodies whose contact points the spin carries apart while their centres approach were
+//! stopped at the start of every step, frozen in each other.
+//!
 //! What rule 3 leaves to the solver — the overlap a spin brings in at a start contact — the
 //! solver sees at the next step: the contact manifold's two points where faces face each other,
 //! and its *core contact* (`core_disc`), a speculative point of the body's core that stops a
@@ -77,6 +86,12 @@ pub enum CastPolicy {
     /// their constant spins.
     #[default]
     Rapier,
+    /// rapier's rules of [`CastPolicy::Rapier`] on parry's constant-spin motions
+    /// ([`MotionPath::ConstantSpin`]) whatever the bodies do: the casts of the moving-pairs
+    /// pass (`MovingPairs`, feature `rapier`), which puts a body it stops on its constant spin,
+    /// not on rapier's nlerp clamp path (rule 1 of the module docs is the only rule that
+    /// changes).
+    RapierConstantSpin,
     /// The crate's time of impact as it is ([`crate::time_of_impact`], [`crate::shape_time_of_impact`]):
     /// parry's constant-spin motions, and with `stop_at_penetration = false` a separating
     /// contact at the start looked past and an approaching one reported at the start time.
@@ -84,6 +99,12 @@ pub enum CastPolicy {
 }
 
 impl CastPolicy {
+    /// Whether the policy applies rapier's rules ([`CastPolicy::Rapier`],
+    /// [`CastPolicy::RapierConstantSpin`]).
+    pub fn is_rapier(self) -> bool {
+        matches!(self, CastPolicy::Rapier | CastPolicy::RapierConstantSpin)
+    }
+
     /// Shapes closer than this fraction of the pair's size (the sum of the bounding radii) at
     /// the start of a cast are in contact there: rapier's CCD leaves a body it clamped at an
     /// impact about 10⁻¹⁰ from the other shape.
@@ -168,9 +189,9 @@ pub(crate) fn inradius_about(g: &dyn Shape, centre: Vector) -> Real {
 }
 
 /// The options of a cast on rapier's clamp path: nlerp, unless both bodies turn (a pair rapier
-/// never casts; the constant spins then).
-pub(crate) fn rapier_path(c: &NonlinearCast, opts: &ToiOptions) -> ToiOptions {
-    let path = if c.m1.angvel == 0.0 || c.m2.angvel == 0.0 {
+/// never casts; the constant spins then) or the policy is [`CastPolicy::RapierConstantSpin`].
+pub(crate) fn rapier_path(c: &NonlinearCast, opts: &ToiOptions, policy: CastPolicy) -> ToiOptions {
+    let path = if policy != CastPolicy::RapierConstantSpin && (c.m1.angvel == 0.0 || c.m2.angvel == 0.0) {
         MotionPath::Nlerp
     } else {
         MotionPath::ConstantSpin
@@ -238,7 +259,8 @@ fn first_time(
 /// iteration from the left finds them exactly (`translation_level`). `level` answers for the
 /// pairs the contact query does not read: the first time the signed distance of the pair
 /// moving by the two given motions comes down to a level (the gap tracker, or the half-space
-/// cast on a shifted plane).
+/// cast on a shifted plane); with `c.spin_at_start` it answers the deepening on the whole
+/// motions ([`CastPolicy::RapierConstantSpin`]).
 pub(crate) fn start_contact_answer(
     c: &NonlinearCast,
     d0: Real,
@@ -258,7 +280,14 @@ pub(crate) fn start_contact_answer(
     let allowance = CastPolicy::ALLOWANCE * r.max(CastPolicy::START_CONTACT_GAP * size);
     let target = (-allowance).min(d0 - allowance);
     let (m1, m2) = (spinless(c.m1), spinless(c.m2));
-    let t_trans = if travel < d0 - target {
+    let t_trans = if c.spin_at_start {
+        // The whole motions, rotation included, down to the same level.
+        if out_of_reach(c, d0, target) {
+            Ok(None)
+        } else {
+            level(c.m1, c.m2, target).map(|t| (t.status != ToiStatus::NoHit).then_some(t.time))
+        }
+    } else if travel < d0 - target {
         Ok(None)
     } else {
         let p = Translating {

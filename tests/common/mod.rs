@@ -10,6 +10,9 @@
 //! * [`appendix_d`]: the specification's Appendix D scene;
 //! * [`ccd_scenes`], [`ccd_judge`]: the CCD scene suite (game-like scenes, both methods) and its
 //!   judge (bodies through, frozen, NaN, panics, depth after a sweep, step time);
+//! * [`moving_pairs`], [`moving_scenes`]: the moving-pairs scenes (issue 30: bullets head-on,
+//!   crossing, a fast plank, the closed box), their world with and without the pass, and the
+//!   judge of pairs through each other;
 //! * [`watched`]: a dispatcher that passes every query on and reports it (the threads that call
 //!   it, the time of each manifold query).
 //!
@@ -20,6 +23,8 @@
 pub mod appendix_d;
 pub mod ccd_judge;
 pub mod ccd_scenes;
+pub mod moving_pairs;
+pub mod moving_scenes;
 pub mod reference;
 pub mod resting;
 pub mod rng;

@@ -122,3 +122,19 @@ fn rapier_parallel_pipeline_with_the_smooth_dispatcher() {
         "the dispatcher was never called from more than one thread"
     );
 }
+
+/// The moving-pairs pass in rapier's parallel pipeline: the closed box of
+/// `tests/moving_pairs.rs` on 1 and 2 workers gives the bits recorded there (rapier without its
+/// `parallel` feature), so the pass is deterministic across the feature and the workers.
+#[test]
+fn the_moving_pairs_box_gives_the_same_bits_on_the_parallel_pipeline() {
+    use common::moving_scenes::{pass_options, run_box_with};
+    /// `MOVING_BOX_STATE` of `tests/moving_pairs.rs`.
+    const MOVING_BOX_STATE: u64 = 0xB7D8_7452_1F0F_256E;
+    for workers in [1, 2] {
+        let pool = |w: &mut World| w.pipeline.configure_thread_pool(workers).expect("thread pool");
+        let hash = run_box_with(150, Some(pass_options()), &pool).hash;
+        println!("moving-pairs box, {workers} workers: {hash:016x}");
+        assert_eq!(hash, MOVING_BOX_STATE, "{workers} workers");
+    }
+}

@@ -56,15 +56,19 @@ mod convert;
 mod dispatcher;
 mod guard;
 mod manifold;
+#[cfg(feature = "rapier")]
+mod moving_pairs;
 mod shapes;
 mod widen;
 
 pub use cast::shape_time_of_impact;
 pub use dispatcher::SmoothDispatcher;
+#[cfg(feature = "rapier")]
+pub use moving_pairs::MovingPairs;
 pub use shapes::{CapsuleEllipse, CustomCurve, Ellipse, RoundedPolygon};
 pub use smooth_ccd2d::{
-    CastPolicy, ConvexCurve, CurvePoint, DistanceOptions, MotionPath, QueryError, ShapeError, TimeOfImpact, ToiCost,
-    ToiOptions, ToiStatus,
+    CastPolicy, ConvexCurve, CurvePoint, DistanceOptions, MotionPath, MovingPairsOptions, MovingPairsReport, PairScope,
+    PassStatus, QueryError, ShapeError, TimeOfImpact, ToiCost, ToiOptions, ToiStatus,
 };
 
 /// The README's examples, compiled and run as doctests.

@@ -1,0 +1,86 @@
+//! The moving-pairs pass in rapier (issue 30): two bodies that both move fast never pass through
+//! each other with `MovingPairs` around `PhysicsPipeline::step`, where rapier alone lets them;
+//! the closed box of 50 fast bouncing bodies has no pair through, and gives the same bits on every
+//! run.
+//!
+//! `cargo test --release --test moving_pairs -- --nocapture` prints the counts. The scenes are
+//! those of `cargo run --release --example moving_pairs` (`tests/common/moving_scenes.rs`).
+
+mod common;
+
+use common::moving_scenes::{
+    crossing_shots, head_on_shots, pass_options, plank_shots, run_box, run_shot, HEAD_ON_STEPS,
+};
+
+/// The final state of the closed box after [`DETERMINISM_STEPS`] steps with the pass: FNV-1a of
+/// every body's pose and velocities. The same constant is checked by `crates/parallel-tests`
+/// on rapier's parallel pipeline (1 and 2 workers). Re-recorded only with the reason in the
+/// CHANGELOG.
+const MOVING_BOX_STATE: u64 = 0xB7D8_7452_1F0F_256E;
+/// Steps of the determinism runs.
+const DETERMINISM_STEPS: usize = 150;
+
+/// Every head-on shot (27 family pairs × 4 speeds to 3000 m/s × 3 spins to 600 rad/s × 2 sizes):
+/// none through with the pass, no NaN; rapier alone lets most through (the scene tests
+/// something).
+#[test]
+fn head_on_bullets_never_pass_through_each_other_with_the_pass() {
+    let shots = head_on_shots();
+    let (mut through, mut alone, mut nan) = (0, 0, 0);
+    for s in &shots {
+        let r = run_shot(&s.launches(), HEAD_ON_STEPS, 0.5, Some(pass_options()));
+        through += usize::from(r.through());
+        nan += usize::from(!r.finite);
+        alone += usize::from(run_shot(&s.launches(), HEAD_ON_STEPS, 0.5, None).through());
+    }
+    println!(
+        "head-on: {through} through of {} shots with the pass, {nan} with NaN; rapier alone: {alone}",
+        shots.len()
+    );
+    assert_eq!((through, nan), (0, 0));
+    assert!(alone > shots.len() / 2, "rapier alone let only {alone} through");
+}
+
+/// Crossing paths and a fast plank: none through with the pass.
+#[test]
+fn crossing_bullets_and_a_fast_plank_are_never_passed_through() {
+    let mut cases = 0;
+    for l in crossing_shots()
+        .iter()
+        .map(|s| s.launches())
+        .chain(plank_shots().iter().map(|s| s.launches()))
+    {
+        let r = run_shot(&l, 20, 0.5, Some(pass_options()));
+        assert!(!r.through() && r.finite, "{l:?}");
+        cases += 1;
+    }
+    println!("{cases} crossing and plank shots: none through");
+}
+
+/// The closed box over 10 s: no pair through each other, no NaN, no panic with the pass;
+/// rapier alone lets thousands through. Bodies whose centre left the box are printed, not
+/// asserted: one does (a body spun up by collisions past rapier's own CCD against a wall, which
+/// the pass does not touch; docs/rapier.md).
+#[test]
+fn the_closed_box_has_no_pair_through_each_other() {
+    let with = run_box(common::moving_scenes::BOX_STEPS, Some(pass_options()));
+    println!(
+        "box with the pass: {} through, {} out, {} into a wall, casts {}, stops {}",
+        with.verdicts.through, with.out_of_box, with.in_wall, with.totals.casts, with.totals.stopped_bodies
+    );
+    assert_eq!(with.verdicts.through, 0);
+    assert!(!with.nan && !with.panicked);
+    assert_eq!(with.totals.not_done, 0, "a pass ran out of events");
+}
+
+/// Two runs of the box give the same bits, and the recorded ones (with and without rapier's
+/// `parallel` feature: `cargo test --workspace` builds rapier with it, `cargo test -p
+/// smooth-ccd2d` without; `crates/parallel-tests` checks 1 and 2 workers).
+#[test]
+fn the_closed_box_is_deterministic_to_the_bit() {
+    let a = run_box(DETERMINISM_STEPS, Some(pass_options())).hash;
+    let b = run_box(DETERMINISM_STEPS, Some(pass_options())).hash;
+    println!("box after {DETERMINISM_STEPS} steps: {a:016x} {b:016x}");
+    assert_eq!(a, b, "two runs differ");
+    assert_eq!(a, MOVING_BOX_STATE, "the box's final state changed: {a:#018x}");
+}
