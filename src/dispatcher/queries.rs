@@ -237,15 +237,7 @@ impl QueryDispatcher for SmoothDispatcher {
         end_time: Real,
         stop_at_penetration: bool,
     ) -> Result<Option<ShapeCastHit>, Unsupported> {
-        let cast = NonlinearCast {
-            m1: motion1,
-            g1,
-            m2: motion2,
-            g2,
-            t0: start_time,
-            t1: end_time,
-            stop: stop_at_penetration,
-        };
+        let cast = NonlinearCast::new(motion1, g1, motion2, g2, (start_time, end_time), stop_at_penetration);
         self.nonlinear_cast(&cast)
     }
 }
