@@ -197,16 +197,28 @@ const FUZZ_CASES: u64 = 40_000;
 /// unchanged. Before: `concentric` 0x977100DDEF32FB5B, `extreme-scale` 0x845D4A6424CBD110,
 /// `grazing` 0x796915294F77B64F, `parry-pair` 0x131F7E8B48BEF598, `random` 0xEBAAEB8DD6495B6A,
 /// `thin-ellipse` 0x72136A220437E847, `wild` 0xF5945A62C54C1DD9.
+///
+/// Re-recorded when the advancement took, at a contact on a face of the turning body (a polygon,
+/// against a polygon or a disc), that face's normal turning with the body as its separating axis
+/// instead of the contact normal fixed in the other body (`query::advance::face_axis`): where
+/// the face turned away from the fixed axis the steps converged linearly, and past 24 contacts
+/// the trackers answered; now the steps are Newton's on the distance itself. The same times to
+/// the advancement's tolerance (1e-3 of the distance tolerance; a cast of the rapier-casts bench
+/// the trackers answered 0.98131353214460, the advancement 0.98131353214457), the same 0 wrong of
+/// 7,200 casts against the reference and hit counts. 65 cases, `parry-pair` 29, `random` 22,
+/// `extreme-scale` 12, `wild` 2; the rapier scene kept its state. Before: `extreme-scale`
+/// 0x56986080980A3ECE, `parry-pair` 0x5E0D5B0E2604076A, `random` 0x2DF06D70F5A6CE43, `wild`
+/// 0x793BC315A3FBE38F.
 const FUZZ_DIGESTS: [(&str, u64); 9] = [
     ("coincident", 0xD05246972C0DC0FE),
     ("concentric", 0xA310B03C479F34FB),
-    ("extreme-scale", 0x56986080980A3ECE),
+    ("extreme-scale", 0xF94E28FB154EA035),
     ("grazing", 0x99FFB0EC2151A936),
-    ("parry-pair", 0x5E0D5B0E2604076A),
-    ("random", 0x2DF06D70F5A6CE43),
+    ("parry-pair", 0x641DF41CBCBF1EDE),
+    ("random", 0xE1406D47C71E29D2),
     ("thin-ellipse", 0x771632A8440A2DB6),
     ("touching-at-t0", 0x78A5D3EE8943D505),
-    ("wild", 0x793BC315A3FBE38F),
+    ("wild", 0x8209BA3C6BED117F),
 ];
 
 /// Final-state hash of the rapier scene (re-recorded with issue 17: the CCD casts between its
