@@ -28,11 +28,11 @@
 //! * B an ellipse with semi-axes a, b (a disc when a = b): S_n = n·x(u) − k(w) − w·c − h_A(n),
 //!   k(w) = √(a²w_x² + b²w_y²).
 //!
-//! Each piece is smooth with |f″| ≤ |n·d|·max|τ″| + θ′²·ρ, where ρ is |vᵢ − c| for a vertex and
+//! Each piece is smooth with |f″| ≤ |n·d|·max|τ″| + θ′²·ρ, where ρ is |vᵢ − c| for a vertex,
 //! max(a, b)²/min(a, b) + |c| for an ellipse (the largest radius of curvature bounds the second
-//! derivative of k along a turning direction). From a time where every piece is above δ, the
-//! step to the first root of f + f′s − Ks²/2 is safe for each piece (the parabola lies below
-//! it), and the smallest over the pieces is safe for S_n; near a crossing it is Newton's step to
+//! derivative of k along a turning direction) and |c| for a disc (k = r in every direction).
+//! From a time where every piece is above δ, the step to the first root of f + f′s − Ks²/2 is
+//! safe for each piece (the parabola lies below it), and the smallest over the pieces is safe for S_n; near a crossing it is Newton's step to
 //! second order, so the first crossing of S_n is found in a few steps.
 //!
 //! At a contact on a face of B (B a polygon, A a polygon or a disc) the axis is that face's
@@ -504,7 +504,13 @@ fn pieces(
             let kk = (wx * wx + wy * wy).sqrt();
             // The support point of the centred ellipse along w: (a² w_x, b² w_y)/k.
             let sp = Vector::new(a * wx, b * wy) / kk;
-            let rho = a.max(b) * a.max(b) / a.min(b) + centre.length();
+            // A disc's k(w) = r is the same in every direction: only w·c turns (a disc about its
+            // centre is a translation, |f″| = 0).
+            let rho = if a == b {
+                centre.length()
+            } else {
+                a.max(b) * a.max(b) / a.min(b) + centre.length()
+            };
             each(base - kk - w.dot(centre), dbase + dtheta * pw.dot(sp + centre), rho);
         }
         Turning::CapsuleEllipse {
