@@ -6,9 +6,9 @@
 
 use super::composite::composite_cast_nonlinear;
 use super::input_guard;
-use super::parry_fallback::parry_cast_nonlinear;
 use super::parry_fallback::parry_nonlinear_without_stop;
-use super::rapier_rule::{in_contact, out_of_reach, rapier_path, start_contact, start_contact_answer};
+use super::parry_fallback::{parry_cast_nonlinear, size_of_radii};
+use super::rapier_rule::{in_contact, out_of_reach, rapier_path, start_contact, start_contact_answer, CastPolicy};
 use super::route::{curves_toi, pair_distance, route_cast, CurveOf, Route, RouteScratch};
 use super::support_shape::{exact_contact_of, support_shape, SupportScratch};
 use super::SmoothDispatcher;
@@ -23,6 +23,7 @@ use crate::query::halfspace::{halfspace_distance, time_of_impact_halfspace};
 use crate::query::path::OnPath;
 use crate::query::time_scale::rescaled;
 use crate::query::toi::{bounding_circles_part, TimeOfImpact, ToiOptions};
+use parry2d_f64::bounding_volume::BoundingSphere;
 use parry2d_f64::query::{NonlinearRigidMotion, ShapeCastHit, Unsupported};
 use parry2d_f64::shape::{HalfSpace, Shape};
 
@@ -36,8 +37,41 @@ pub(crate) struct NonlinearCast<'a> {
     pub t1: Real,
     pub stop: bool,
     /// Rule 3 of `rapier_rule` on the full motions, rotation included
-    /// ([`crate::CastPolicy::RapierConstantSpin`]).
+    /// ([`crate::CastPolicy::RapierConstantSpin`]); false from [`NonlinearCast::new`].
     pub spin_at_start: bool,
+    /// The shapes' local bounding spheres, read once a cast (the size, the reach and the
+    /// tolerances of every rule take them).
+    pub spheres: [BoundingSphere; 2],
+}
+
+impl<'a> NonlinearCast<'a> {
+    /// The cast of `g1` moving by `m1` and `g2` by `m2` over `[t0, t1]`.
+    pub(crate) fn new(
+        m1: &'a NonlinearRigidMotion,
+        g1: &'a dyn Shape,
+        m2: &'a NonlinearRigidMotion,
+        g2: &'a dyn Shape,
+        (t0, t1): (Real, Real),
+        stop: bool,
+    ) -> Self {
+        let spheres = [g1.compute_local_bounding_sphere(), g2.compute_local_bounding_sphere()];
+        NonlinearCast {
+            m1,
+            g1,
+            m2,
+            g2,
+            t0,
+            t1,
+            stop,
+            spin_at_start: false,
+            spheres,
+        }
+    }
+
+    /// The pair's size ([`super::parry_fallback::pair_size`]) from its spheres.
+    pub(crate) fn size(&self) -> Real {
+        size_of_radii(self.spheres[0].radius, self.spheres[1].radius)
+    }
 }
 
 /// parry's hit for this crate's answer.
@@ -152,7 +186,7 @@ impl SmoothDispatcher {
         if !(motion_is_finite(c.m1) && motion_is_finite(c.m2) && c.t0.is_finite() && c.t1.is_finite()) {
             return None;
         }
-        let size = super::parry_fallback::pair_size(c.g1, c.g2);
+        let size = c.size();
         let scaled = rescaled(c.m1, c.m2, c.t0, c.t1, size);
         let (m1, m2, t0, t1, scale) = match &scaled {
             Some(r) => (r.m1, r.m2, r.t0, r.t1, r.scale),
@@ -351,6 +385,12 @@ fn rapier_fast_path(
     let (mut st1, mut st2) = (SupportScratch::default(), SupportScratch::default());
     let s1 = support_shape(c.g1, &mut st1)?;
     let s2 = support_shape(c.g2, &mut st2)?;
+    // The bounding spheres first: a pair they keep out of reach needs no exact contact (a gap
+    // that overflows proves nothing).
+    let gap = sphere_gap(c);
+    if gap.is_finite() && out_of_reach(c, gap, opts.target_distance) {
+        return Some(Ok(None));
+    }
     let k0 = exact_contact_of(s1, s2, &pos12_at(c.m1, c.m2, c.t0), None)?;
     let d0 = k0.dist;
     if out_of_reach(c, d0, opts.target_distance) {
@@ -364,6 +404,21 @@ fn rapier_fast_path(
         });
     }
     advanced(c, s1, s2, opts, Some(k0))
+}
+
+/// A lower bound of the signed distance of the cast's shapes at its start: every point of a body
+/// is within R = r + |s − c| of its rotation centre (r and s its bounding sphere's radius and
+/// centre, c the rotation centre, all in its frame), so with p₁, p₂ the rotation centres at t₀
+/// the shapes are at least |p₂ − p₁| − R₁ − R₂ apart (and, overlapping, no deeper than
+/// R₁ + R₂ − |p₂ − p₁|: moving one along p₂ − p₁ by that much parts the circles).
+fn sphere_gap(c: &NonlinearCast) -> Real {
+    let at = |m: &NonlinearRigidMotion, s: &BoundingSphere| {
+        let centre = m.start * m.local_center + m.linvel * c.t0;
+        (centre, s.radius + (s.center - m.local_center).length())
+    };
+    let (p1, r1) = at(c.m1, &c.spheres[0]);
+    let (p2, r2) = at(c.m2, &c.spheres[1]);
+    (p2 - p1).length() - r1 - r2
 }
 
 /// The first time the signed distance of the cast's shapes moving by `m1`, `m2` comes down to
@@ -418,11 +473,8 @@ fn advanced(
 ) -> Option<Result<Option<ShapeCastHit>, Unsupported>> {
     let on = OnPath::new(c.m1, c.m2, c.t0, c.t1, opts.path).ok()?;
     // The size s of the tolerances: the larger bounding radius about the local origins.
-    let radius = |g: &dyn Shape| {
-        let b = g.compute_local_bounding_sphere();
-        b.radius + b.center.length()
-    };
-    let tol = opts.distance_tolerance * radius(c.g1).max(radius(c.g2));
+    let radius = |b: &BoundingSphere| b.radius + b.center.length();
+    let tol = opts.distance_tolerance * radius(&c.spheres[0]).max(radius(&c.spheres[1]));
     match advance_time_of_impact(s1, s2, c.g1, c.g2, &on, c.t0, c.t1, opts.target_distance, tol, first) {
         Advance::Answer(t) => Some(toi_to_parry(Ok(Some(t)))),
         Advance::Declined => None,

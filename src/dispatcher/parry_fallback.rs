@@ -24,15 +24,16 @@ pub(crate) fn pushed_together(pos12: &Pose, push: Real) -> Pose {
 /// The size of a pair: the sum of the bounding radii (of the bounded shapes: a half-space
 /// counts for nothing).
 pub(crate) fn pair_size(g1: &dyn Shape, g2: &dyn Shape) -> Real {
-    let r = |g: &dyn Shape| {
-        let r = g.compute_local_bounding_sphere().radius;
-        if r.is_finite() && r < 0.5 * Real::MAX {
-            r
-        } else {
-            0.0
-        }
-    };
-    r(g1) + r(g2)
+    size_of_radii(
+        g1.compute_local_bounding_sphere().radius,
+        g2.compute_local_bounding_sphere().radius,
+    )
+}
+
+/// [`pair_size`] of two shapes of bounding radii `r1` and `r2`.
+pub(crate) fn size_of_radii(r1: Real, r2: Real) -> Real {
+    let r = |r: Real| if r.is_finite() && r < 0.5 * Real::MAX { r } else { 0.0 };
+    r(r1) + r(r2)
 }
 
 /// Whether parry's distance (GJK) puts the shapes within `prediction` of each other.

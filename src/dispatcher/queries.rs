@@ -237,16 +237,8 @@ impl QueryDispatcher for SmoothDispatcher {
         end_time: Real,
         stop_at_penetration: bool,
     ) -> Result<Option<ShapeCastHit>, Unsupported> {
-        let cast = NonlinearCast {
-            m1: motion1,
-            g1,
-            m2: motion2,
-            g2,
-            t0: start_time,
-            t1: end_time,
-            stop: stop_at_penetration,
-            spin_at_start: self.cast_policy == super::CastPolicy::RapierConstantSpin,
-        };
+        let mut cast = NonlinearCast::new(motion1, g1, motion2, g2, (start_time, end_time), stop_at_penetration);
+        cast.spin_at_start = self.cast_policy == super::CastPolicy::RapierConstantSpin;
         self.nonlinear_cast(&cast)
     }
 }

@@ -56,7 +56,6 @@
 
 use super::cast::{toi_to_parry, NonlinearCast};
 use super::core_disc::core_of;
-use super::parry_fallback::pair_size;
 use super::support_shape::{exact_contact, support_shape, SupportScratch};
 use super::translation_level::{translation_time_to_level, LevelTime, Translating};
 use crate::error::QueryError;
@@ -64,6 +63,7 @@ use crate::numerics::math::{Pose, Real, Vector};
 use crate::query::contact::Contact;
 use crate::query::path::MotionPath;
 use crate::query::toi::{TimeOfImpact, ToiOptions, ToiStatus};
+use parry2d_f64::bounding_volume::BoundingSphere;
 use parry2d_f64::query::{NonlinearRigidMotion, ShapeCastHit, Unsupported};
 use parry2d_f64::shape::{Ball, Shape};
 
@@ -208,7 +208,7 @@ pub(crate) fn start_contact(c: &NonlinearCast) -> Option<Contact> {
 
 /// Whether shapes at signed distance `d0` at the start of `c` are in contact there.
 pub(crate) fn in_contact(c: &NonlinearCast, d0: Real) -> bool {
-    d0 <= CastPolicy::START_CONTACT_GAP * pair_size(c.g1, c.g2)
+    d0 <= CastPolicy::START_CONTACT_GAP * c.size()
 }
 
 /// Whether shapes at signed distance `d0` at the start of `c` cannot come within `target` of
@@ -218,14 +218,13 @@ pub(crate) fn in_contact(c: &NonlinearCast, d0: Real) -> bool {
 /// apart shapes changes by no more than their points move.
 pub(crate) fn out_of_reach(c: &NonlinearCast, d0: Real, target: Real) -> bool {
     let window = c.t1 - c.t0;
-    let reach = |m: &NonlinearRigidMotion, g: &dyn Shape| {
-        let sphere = g.compute_local_bounding_sphere();
+    let reach = |m: &NonlinearRigidMotion, sphere: &BoundingSphere| {
         let radius = sphere.radius + (sphere.center - m.local_center).length();
         m.linvel.length() * window + radius * (m.angvel.abs() * window).min(2.0)
     };
-    let both = reach(c.m1, c.g1) + reach(c.m2, c.g2);
+    let both = reach(c.m1, &c.spheres[0]) + reach(c.m2, &c.spheres[1]);
     // A relative margin for the rounding of the distance and of the bound.
-    let margin = 1e-9 * (pair_size(c.g1, c.g2) + both);
+    let margin = 1e-9 * (c.size() + both);
     both.is_finite() && d0 - target > both + margin
 }
 
@@ -270,7 +269,7 @@ pub(crate) fn start_contact_answer(
 ) -> Result<Option<ShapeCastHit>, Unsupported> {
     let f = fast(c);
     let r = inradius_about(f.g, f.m.local_center);
-    let size = pair_size(c.g1, c.g2);
+    let size = c.size();
     let window = c.t1 - c.t0;
     let nudge = c.t0 + CastPolicy::START_NUDGE * window;
     let tol = opts.distance_tolerance * size;

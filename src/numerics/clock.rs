@@ -177,8 +177,10 @@ impl Clock {
     /// ```
     ///
     /// So a rotation uniform in the clock, θ = θ₀ + ω·u, is the nlerp rotation in path time
-    /// (θ′ = 2k/(T(1 + x²k²)) with ω = 2h/T, the largest at the middle of the window).
-    #[inline]
+    /// (θ′ = 2k/(T(1 + x²k²)) with ω = 2h/T, the largest at the middle of the window). The
+    /// advancement takes the rotation without the arc tangent ([`Clock::turn_of_path`]); this
+    /// form checks it.
+    #[cfg(test)]
     pub(crate) fn clock_of_path(&self, tau: f64) -> (f64, f64, f64) {
         let x = (2.0 * (tau - self.t0) * self.inv_t - 1.0).clamp(-1.0, 1.0);
         let q = 1.0 + x * x * self.k * self.k;
@@ -188,7 +190,29 @@ impl Clock {
         (u, d1, d2)
     }
 
-    /// Bounds of |du/dτ| and |d²u/dτ²| ([`Clock::clock_of_path`]) for path times between `ta`
+    /// The nlerp rotation at the *path* time `tau` measured from the middle of the window, as the
+    /// tangent of its angle, y = x·k (the angle is atan(x·k) = ω·(u − t₀ − T/2), with x and u
+    /// as in `Clock::clock_of_path`), and du/dτ = (k/h)/(1 + y²): no trigonometric function.
+    #[inline]
+    pub(crate) fn turn_of_path(&self, tau: f64) -> (f64, f64) {
+        let x = (2.0 * (tau - self.t0) * self.inv_t - 1.0).clamp(-1.0, 1.0);
+        let y = x * self.k;
+        (y, self.k / self.half / (1.0 + y * y))
+    }
+
+    /// How much the nlerp turning rate varies over the window: its largest over its least
+    /// value, 1 + k² (du/dτ = (k/h)/(1 + x²k²) over x ∈ [−1, 1]).
+    pub(crate) fn rate_spread(&self) -> f64 {
+        1.0 + self.k * self.k
+    }
+
+    /// The clock time at the middle of the window, t₀ + T/2 (where the nlerp rotation is at
+    /// half its turn).
+    pub(crate) fn middle(&self) -> f64 {
+        self.t0 + 0.5 * self.span
+    }
+
+    /// Bounds of |du/dτ| and |d²u/dτ²| (`Clock::clock_of_path`) for path times between `ta`
     /// and `tb` (either order): |du/dτ| is largest at the x of least |x|, |d²u/dτ²| ∝
     /// |x|/(1 + x²k²)² grows up to |x| = 1/(√3·|k|) and falls after.
     pub(crate) fn clock_of_path_bounds(&self, ta: f64, tb: f64) -> (f64, f64) {
@@ -282,6 +306,20 @@ mod tests {
                         "Δ {delta} s {s}"
                     );
                 }
+            }
+            // The same rotation without the arc tangent: tan(ω·(u − t₀ − T/2)) and du/dτ.
+            let mid = c.middle();
+            assert_eq!(mid, t0 + 0.5 * span);
+            for i in 0..=200 {
+                let tau = t0 + span * i as f64 / 200.0;
+                let (u, d1, _) = c.clock_of_path(tau);
+                let (y, e1) = c.turn_of_path(tau);
+                let angle = omega * (u - mid);
+                assert!(
+                    (y.atan() - angle).abs() <= 1e-12 * (1.0 + angle.abs()),
+                    "Δ {delta} τ {tau}"
+                );
+                assert!((e1 - d1).abs() <= 1e-12 * d1.abs(), "Δ {delta} τ {tau}");
             }
             for (a, b) in [(0.0, 1.0), (0.0, 0.3), (0.6, 0.9), (0.45, 0.55), (0.9, 1.0)] {
                 let (ta, tb) = (t0 + span * a, t0 + span * b);
