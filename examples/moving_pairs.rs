@@ -18,7 +18,8 @@ mod common;
 use common::moving_pairs::{Launch, Verdicts};
 use common::moving_scenes::{
     crossing_shots, head_on_pairs, head_on_shots, pass_options, pile_cost, plank_shots, run_box, run_shot,
-    wall_bounce_energy, BoxResult, PlankWay, ShotResult, BOX_BODIES, BOX_STEPS, HEAD_ON_STEPS, SLOW_SPEED, SLOW_STEPS,
+    run_shot_with, wall_bounce_energy, BoxResult, PlankWay, ShotResult, BOX_BODIES, BOX_STEPS, HEAD_ON_STEPS,
+    SLOW_SPEED, SLOW_STEPS,
 };
 use std::time::Instant;
 
@@ -54,6 +55,11 @@ fn main() {
     let results: Vec<Both> = shots.iter().map(|s| both(&s.launches(), HEAD_ON_STEPS, 0.5)).collect();
     // The same shots slowed to 1 m/s in rapier alone: the collision as rapier's solver resolves
     // it without any CCD (the reference for the energy).
+    // The same shots with `CoreContactHooks` (no bounce on the core contacts).
+    let hooked: Vec<ShotResult> = shots
+        .iter()
+        .map(|s| run_shot_with(&s.launches(), HEAD_ON_STEPS, 0.5, Some(pass_options()), true))
+        .collect();
     let slowed: Vec<ShotResult> = shots
         .iter()
         .map(|s| run_shot(&s.slowed().launches(), SLOW_STEPS, 0.5, None))
@@ -65,11 +71,19 @@ fn main() {
         shots.len()
     );
     println!(
-        "{:<34} {:>5} {:>12} {:>12} {:>14} {:>14} {:>12}",
-        "pair", "shots", "through/pass", "through/alone", "max E1/E0 pass", "E1/E0 slowed", "max |Δp| pass"
+        "{:<34} {:>5} {:>12} {:>12} {:>14} {:>12} {:>14} {:>12}",
+        "pair",
+        "shots",
+        "through/pass",
+        "through/alone",
+        "max E1/E0 pass",
+        "with hooks",
+        "E1/E0 slowed",
+        "max |Δp| pass"
     );
     let mut worst_e = 0.0f64;
     let (mut gained, mut gained_slow, mut worst_slow, mut gained_pass_only) = (0, 0, 0.0f64, 0);
+    let (mut gained_hooked, mut through_hooked, mut worst_hooked) = (0, 0, 0.0f64);
     for (a, b) in head_on_pairs() {
         let rows: Vec<(usize, &Both)> = results
             .iter()
@@ -78,10 +92,14 @@ fn main() {
             .collect();
         let through = rows.iter().filter(|(_, r)| r.pass.through()).count();
         let alone = rows.iter().filter(|(_, r)| r.alone.through()).count();
-        let (mut e, mut p, mut e_slow) = (0.0f64, 0.0f64, 0.0f64);
+        let (mut e, mut p, mut e_slow, mut e_hooked) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
         for (i, r) in &rows {
             let (ei, pi) = conservation(&r.pass, &shots[*i].launches());
             let slow = &slowed[*i];
+            let h = &hooked[*i];
+            e_hooked = e_hooked.max(h.e1 / h.e0.max(f64::MIN_POSITIVE));
+            gained_hooked += usize::from(gains(h));
+            through_hooked += usize::from(h.through());
             e = e.max(ei);
             p = p.max(pi);
             e_slow = e_slow.max(slow.e1 / slow.e0.max(f64::MIN_POSITIVE));
@@ -92,13 +110,15 @@ fn main() {
         }
         worst_e = worst_e.max(e);
         worst_slow = worst_slow.max(e_slow);
+        worst_hooked = worst_hooked.max(e_hooked);
         println!(
-            "{:<34} {:>5} {:>12} {:>12} {:>14.9} {:>14.9} {:>12.2e}",
+            "{:<34} {:>5} {:>12} {:>12} {:>14.9} {:>12.9} {:>14.9} {:>12.2e}",
             format!("{} / {}", a.name(), b.name()),
             rows.len(),
             through,
             alone,
             e,
+            e_hooked,
             e_slow,
             p
         );
@@ -125,6 +145,11 @@ fn main() {
          restitution on a contact of two rows (Box2D's: each point that pushed gets the bounce of its own \
          approach velocity): two points where flat sides meet, or the exact point and a core contact \
          (docs/rapier.md); the pass keeps every velocity)"
+    );
+    println!(
+        "(with hooks: the pass with `CoreContactHooks` installed, restitution 0 on the core contacts' manifolds: \
+         energy gained in {gained_hooked} of {} shots, largest {worst_hooked:.6}, through {through_hooked})",
+        shots.len()
     );
     let (wall_gained, wall_shots, wall_worst) = wall_bounce_energy();
     println!(
@@ -170,15 +195,20 @@ fn main() {
     }
 
     // The box.
-    let with = run_box(BOX_STEPS, Some(pass_options()));
-    let alone = run_box(BOX_STEPS, None);
+    let with = run_box(BOX_STEPS, Some(pass_options()), true);
+    let alone = run_box(BOX_STEPS, None, true);
+    let (with_plain, alone_plain) = (
+        run_box(BOX_STEPS, Some(pass_options()), false),
+        run_box(BOX_STEPS, None, false),
+    );
     println!();
     println!(
         "The closed box: {BOX_BODIES} bullets of every family (50–250 m/s, spins to ±300 rad/s), restitution 1, \
-         no friction, {BOX_STEPS} steps (10 s)"
+         no friction, {BOX_STEPS} steps (10 s); with CoreContactHooks (as docs/rapier.md advises for bouncing \
+         bodies), and the same without them"
     );
     println!(
-        "{:<14} {:>8} {:>10} {:>8} {:>4} {:>4} {:>4} {:>6} {:>10} {:>10} {:>7} {:>7} {:>6}",
+        "{:<26} {:>8} {:>10} {:>8} {:>4} {:>4} {:>4} {:>6} {:>9} {:>10} {:>10} {:>7} {:>7} {:>6}",
         "",
         "through",
         "in contact",
@@ -187,13 +217,19 @@ fn main() {
         "wall",
         "NaN",
         "panic",
+        "E1/E0",
         "step ms",
         "pass ms",
         "share",
         "stops",
         "casts"
     );
-    for (name, r) in [("with the pass", &with), ("rapier alone", &alone)] {
+    for (name, r) in [
+        ("with the pass", &with),
+        ("rapier alone", &alone),
+        ("with the pass, no hooks", &with_plain),
+        ("rapier alone, no hooks", &alone_plain),
+    ] {
         box_row(name, r);
     }
     println!(
@@ -241,7 +277,8 @@ fn main() {
     println!("(ran in {:.1} s)", t.elapsed().as_secs_f64());
     println!(
         "head-on: {head_through} through of {} shots with the pass (energy gained in {gained}, largest E after/before \
-         {worst_e:.6}, in {gained_pass_only} where the slowed shot gained none; NaN in {head_nan}); rapier alone: \
+         {worst_e:.6}, in {gained_pass_only} where the slowed shot gained none; with CoreContactHooks in \
+         {gained_hooked}, largest {worst_hooked:.6}; NaN in {head_nan}); rapier alone: \
          {head_alone} through of {} (slowed to {SLOW_SPEED} m/s: energy gained in {gained_slow}, largest \
          {worst_slow:.6})",
         results.len(),
@@ -249,7 +286,8 @@ fn main() {
     );
     println!(
         "box: {} pairs through with the pass ({} bodies out of the box, {} into a wall, NaN {}, panic {}; the pass \
-         {:.1} % of the step); rapier alone: {} pairs through ({} out, {} into a wall, NaN {}, panic {})",
+         {:.1} % of the step); rapier alone: {} pairs through ({} out, {} into a wall, NaN {}, panic {}); without \
+         CoreContactHooks: {} through and {} out with the pass, {} and {} alone",
         with.verdicts.through,
         with.out_of_box,
         with.in_wall,
@@ -260,7 +298,11 @@ fn main() {
         alone.out_of_box,
         alone.in_wall,
         yes(alone.nan),
-        yes(alone.panicked)
+        yes(alone.panicked),
+        with_plain.verdicts.through,
+        with_plain.out_of_box,
+        alone_plain.verdicts.through,
+        alone_plain.out_of_box
     );
 }
 
@@ -289,11 +331,12 @@ fn box_row(name: &str, r: &BoxResult) {
         grazing,
     } = r.verdicts;
     println!(
-        "{name:<14} {through:>8} {crossed_in_contact:>10} {grazing:>8} {:>4} {:>4} {:>4} {:>6} {:>10.1} {:>10.1} {:>6.1}% {:>7} {:>6}",
+        "{name:<26} {through:>8} {crossed_in_contact:>10} {grazing:>8} {:>4} {:>4} {:>4} {:>6} {:>9.3e} {:>10.1} {:>10.1} {:>6.1}% {:>7} {:>6}",
         r.out_of_box,
         r.in_wall,
         yes(r.nan),
         yes(r.panicked),
+        r.energy_ratio,
         r.step_time.as_secs_f64() * 1e3,
         r.pass_time.as_secs_f64() * 1e3,
         share(r),

@@ -8,7 +8,7 @@ use super::composite::composite_cast_nonlinear;
 use super::input_guard;
 use super::parry_fallback::parry_nonlinear_without_stop;
 use super::parry_fallback::{parry_cast_nonlinear, size_of_radii};
-use super::rapier_rule::{in_contact, out_of_reach, rapier_path, start_contact, start_contact_answer, CastPolicy};
+use super::rapier_rule::{in_contact, out_of_reach, rapier_path, start_contact, start_contact_answer};
 use super::route::{curves_toi, pair_distance, route_cast, CurveOf, Route, RouteScratch};
 use super::support_shape::{exact_contact_of, support_shape, SupportScratch};
 use super::SmoothDispatcher;

@@ -113,6 +113,13 @@ pub(crate) fn core_contacts(s1: SupportShape, s2: SupportShape, pos12: &Pose, c:
 /// shape's vertex numbering reaches (body 2's core: the code below it).
 pub(crate) const CORE_FEATURE: u32 = 0x3fff_fffe;
 
+/// Whether a packed feature id (parry's `PackedFeatureId.0`, of the f64 or the f32 build) is a
+/// core contact's: `CoreContactHooks` of both packages. Not a public API.
+#[doc(hidden)]
+pub fn is_core_feature(packed: u32) -> bool {
+    packed == vertex_id(CORE_FEATURE).0 || packed == vertex_id(CORE_FEATURE - 1).0
+}
+
 /// Fills `manifold` with both bodies' core contacts ([`core_contacts`]) of a pair whose exact
 /// contact is `c`, in a manifold of their own beside the exact points' (the normal of `c`), when
 /// `with` (the pair has a contact point): speculative points that rapier's solver keeps only

@@ -43,12 +43,16 @@
 //! * `cast`: the nonlinear cast, routed, with the [`CastPolicy`] applied;
 //! * `rapier_rule`: [`CastPolicy`] and rapier's rules (the clamp path, a contact at the start);
 //! * `core_disc`: the shapes' cores, and the manifold's core contact;
+//! * `core_hooks`: [`CoreContactHooks`], rapier hooks that keep the bounce off the core contacts
+//!   (feature `rapier`);
 //! * `parry_fallback`: parry's answers made robust (nearly touching contacts, windows not at 0);
 //! * `input_guard`: what is refused before parry sees it.
 
 mod cast;
 mod composite;
 mod core_disc;
+#[cfg(feature = "rapier")]
+mod core_hooks;
 pub(crate) mod inline_polygon;
 pub(crate) mod input_guard;
 mod manifold;
@@ -62,6 +66,10 @@ pub(crate) mod support_shape;
 mod translation_level;
 
 pub use cast::shape_time_of_impact;
+#[cfg(feature = "rapier")]
+pub use core_hooks::CoreContactHooks;
+#[doc(hidden)]
+pub use core_disc::is_core_feature;
 pub use rapier_rule::CastPolicy;
 
 use crate::error::QueryError;

@@ -8,8 +8,8 @@ use super::world::World;
 use parry2d_f64::query::QueryDispatcher;
 use rapier2d_f64::prelude::*;
 use smooth_ccd2d::{
-    CapsuleEllipse, ConvexCurve, CurvePoint, CustomCurve, Dual2, Ellipse, MovingPairs, MovingPairsOptions,
-    MovingPairsReport, RoundedPolygon, SmoothDispatcher,
+    CapsuleEllipse, ConvexCurve, CoreContactHooks, CurvePoint, CustomCurve, Dual2, Ellipse, MovingPairs,
+    MovingPairsOptions, MovingPairsReport, RoundedPolygon, SmoothDispatcher,
 };
 use std::time::{Duration, Instant};
 
@@ -216,6 +216,8 @@ pub struct Run {
     pub totals: Totals,
     /// The bodies the pass stopped in the last step, with the fraction of the step where.
     pub stops: Vec<(RigidBodyHandle, f64)>,
+    /// Steps with `CoreContactHooks` ([`Run::with_core_hooks`]).
+    pub core_hooks: bool,
 }
 
 impl Run {
@@ -232,7 +234,18 @@ impl Run {
             pass_time: Duration::ZERO,
             totals: Totals::default(),
             stops: Vec::new(),
+            core_hooks: false,
         }
+    }
+
+    /// The same world stepped with `CoreContactHooks`, every collider's
+    /// `ActiveHooks::MODIFY_SOLVER_CONTACTS` on.
+    pub fn with_core_hooks(mut self) -> Self {
+        for (_, co) in self.world.colliders.iter_mut() {
+            co.set_active_hooks(co.active_hooks() | ActiveHooks::MODIFY_SOLVER_CONTACTS);
+        }
+        self.core_hooks = true;
+        self
     }
 
     /// Inserts a fixed box of half-extents `half` at `at` (restitution 1, `friction`).
@@ -252,11 +265,12 @@ impl Run {
             p.before_step(&self.world.bodies);
         }
         let t1 = Instant::now();
-        self.world.step(Vector::ZERO, &());
+        let hooks: &dyn PhysicsHooks = if self.core_hooks { &CoreContactHooks } else { &() };
+        self.world.step_with(Vector::ZERO, hooks, &());
         let t2 = Instant::now();
         if let Some(p) = &mut self.pass {
             let w = &mut self.world;
-            let r = p.after_step(&w.params, &mut w.bodies, &mut w.colliders, &(), &());
+            let r = p.after_step(&w.params, &mut w.bodies, &mut w.colliders, hooks, &());
             self.totals.add(&r);
         }
         let end = Instant::now();

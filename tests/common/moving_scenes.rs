@@ -37,7 +37,21 @@ impl ShotResult {
 /// Runs `launches` for `steps` steps (friction `friction`), with the pass of `options` or
 /// rapier alone.
 pub fn run_shot(launches: &[Launch], steps: usize, friction: f64, options: Option<MovingPairsOptions>) -> ShotResult {
+    run_shot_with(launches, steps, friction, options, false)
+}
+
+/// [`run_shot`], stepped with `CoreContactHooks` when `core_hooks`.
+pub fn run_shot_with(
+    launches: &[Launch],
+    steps: usize,
+    friction: f64,
+    options: Option<MovingPairsOptions>,
+    core_hooks: bool,
+) -> ShotResult {
     let mut run = Run::new(launches, friction, options);
+    if core_hooks {
+        run = run.with_core_hooks();
+    }
     let (e0, p0) = (run.energy(), run.momentum());
     let mut judge = Judge::new(&run);
     let mut finite = true;
@@ -350,12 +364,15 @@ pub struct BoxResult {
     pub totals: Totals,
     /// FNV-1a of the final state's bits.
     pub hash: u64,
+    /// The kinetic energy at the end over that at the start.
+    pub energy_ratio: f64,
 }
 
 /// Runs the box for `steps` steps (frictionless, restitution 1, walls 1 m thick), with the
-/// pass of `options` or rapier alone; a panic is caught and reported.
-pub fn run_box(steps: usize, options: Option<MovingPairsOptions>) -> BoxResult {
-    run_box_with(steps, options, &|_| {})
+/// pass of `options` or rapier alone, with `CoreContactHooks` (`core_hooks`: as docs/rapier.md
+/// advises for bouncing bodies) or without; a panic is caught and reported.
+pub fn run_box(steps: usize, options: Option<MovingPairsOptions>, core_hooks: bool) -> BoxResult {
+    run_box_with(steps, options, core_hooks, &|_| {})
 }
 
 /// [`run_box`] in a world that `setup` prepares first (`crates/parallel-tests`: rapier's
@@ -363,6 +380,7 @@ pub fn run_box(steps: usize, options: Option<MovingPairsOptions>) -> BoxResult {
 pub fn run_box_with(
     steps: usize,
     options: Option<MovingPairsOptions>,
+    core_hooks: bool,
     setup: &dyn Fn(&mut super::world::World),
 ) -> BoxResult {
     let mut run = Run::new(&box_launches(), 0.0, options);
@@ -376,6 +394,10 @@ pub fn run_box_with(
     ] {
         run.wall(at, half, 0.0);
     }
+    if core_hooks {
+        run = run.with_core_hooks();
+    }
+    let e0 = run.energy();
     let mut judge = Judge::new(&run);
     let mut out = vec![false; run.bodies.len()];
     let mut in_wall = vec![false; run.bodies.len()];
@@ -405,6 +427,7 @@ pub fn run_box_with(
         pass_time: run.pass_time,
         totals: run.totals,
         hash: state_hash(&run.world, &handles).0,
+        energy_ratio: run.energy() / e0,
     }
 }
 

@@ -53,6 +53,11 @@ impl World {
 
     /// One step under `gravity`, events to `events` (`&()` to drop them).
     pub fn step(&mut self, gravity: Vector, events: &dyn EventHandler) {
+        self.step_with(gravity, &(), events);
+    }
+
+    /// One step under `gravity` with these hooks.
+    pub fn step_with(&mut self, gravity: Vector, hooks: &dyn PhysicsHooks, events: &dyn EventHandler) {
         self.pipeline.step(
             gravity,
             &self.params,
@@ -65,7 +70,7 @@ impl World {
             &mut self.multibody_joints,
             &mut self.soft_bodies,
             &mut self.ccd,
-            &(),
+            hooks,
             events,
         );
     }

@@ -52,6 +52,8 @@
 
 mod cast;
 mod composite;
+#[cfg(feature = "rapier")]
+mod core_hooks;
 mod convert;
 mod dispatcher;
 mod guard;
@@ -63,6 +65,8 @@ mod widen;
 
 pub use cast::shape_time_of_impact;
 pub use dispatcher::SmoothDispatcher;
+#[cfg(feature = "rapier")]
+pub use core_hooks::CoreContactHooks;
 #[cfg(feature = "rapier")]
 pub use moving_pairs::MovingPairs;
 pub use shapes::{CapsuleEllipse, CustomCurve, Ellipse, RoundedPolygon};
