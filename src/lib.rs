@@ -39,10 +39,10 @@ mod query;
 mod shapes;
 
 pub use curve::{ConvexCurve, CurvePoint, SupportJet};
-#[cfg(feature = "rapier")]
-pub use dispatcher::CoreContactHooks;
 #[doc(hidden)]
 pub use dispatcher::is_core_feature as __is_core_feature;
+#[cfg(feature = "rapier")]
+pub use dispatcher::CoreContactHooks;
 pub use dispatcher::{shape_time_of_impact, CastPolicy, SmoothDispatcher};
 pub use error::{QueryError, ShapeError, MAX_LENGTH, MAX_VERTICES, MIN_LENGTH};
 #[doc(hidden)]

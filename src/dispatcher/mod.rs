@@ -66,10 +66,10 @@ pub(crate) mod support_shape;
 mod translation_level;
 
 pub use cast::shape_time_of_impact;
-#[cfg(feature = "rapier")]
-pub use core_hooks::CoreContactHooks;
 #[doc(hidden)]
 pub use core_disc::is_core_feature;
+#[cfg(feature = "rapier")]
+pub use core_hooks::CoreContactHooks;
 pub use rapier_rule::CastPolicy;
 
 use crate::error::QueryError;

@@ -52,9 +52,9 @@
 
 mod cast;
 mod composite;
+mod convert;
 #[cfg(feature = "rapier")]
 mod core_hooks;
-mod convert;
 mod dispatcher;
 mod guard;
 mod manifold;
@@ -64,9 +64,9 @@ mod shapes;
 mod widen;
 
 pub use cast::shape_time_of_impact;
-pub use dispatcher::SmoothDispatcher;
 #[cfg(feature = "rapier")]
 pub use core_hooks::CoreContactHooks;
+pub use dispatcher::SmoothDispatcher;
 #[cfg(feature = "rapier")]
 pub use moving_pairs::MovingPairs;
 pub use shapes::{CapsuleEllipse, CustomCurve, Ellipse, RoundedPolygon};
