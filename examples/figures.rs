@@ -30,7 +30,7 @@ use parry2d_f64::query::NonlinearRigidMotion;
 use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
-use smooth_ccd2d::{eval_pair, PairFrame};
+use smooth_ccd2d::method::{eval_pair, PairFrame};
 use smooth_ccd2d::{
     stationary_distance, time_of_impact_traced, CapsuleEllipse, ConvexCurve, DistanceOptions, Ellipse, RoundedPolygon,
     ToiOptions, ToiStatus, TraceEvent,
@@ -625,7 +625,7 @@ trait Wrapped {
 impl Wrapped for TraceEvent {
     /// The event with φ wrapped into [−π, π) (the tracker lets φ run past ±π).
     fn wrapped(&self) -> TraceEvent {
-        let w = smooth_ccd2d::wrap_phi;
+        let w = smooth_ccd2d::method::wrap_phi;
         match *self {
             TraceEvent::Start { phi, t, distance } => TraceEvent::Start {
                 phi: w(phi),

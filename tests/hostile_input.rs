@@ -142,7 +142,9 @@ impl ConvexCurve for Broken {
             }
             Break::NanEval if (1.0..=1.1).contains(&phi) => cp.point.x = f64::NAN,
             Break::LongNormal => cp.normal *= 1.01,
-            Break::Unwrapped if !(-PI..PI).contains(&phi) => cp = self.e.eval(smooth_ccd2d::wrap_phi(phi) + 0.5),
+            Break::Unwrapped if !(-PI..PI).contains(&phi) => {
+                cp = self.e.eval(smooth_ccd2d::method::wrap_phi(phi) + 0.5)
+            }
             Break::NoDerivative => cp.d_point = Vector::ZERO,
             _ => {}
         }
