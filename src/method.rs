@@ -9,7 +9,7 @@
 //!   [`Jet2`] and [`JetVec`] carry the derivatives. The crate's trackers are built on these
 //!   (docs/theory.md in the repository gives the method).
 //!
-//! These items were at the crate's root before 0.1.0 (CHANGELOG, "Changed").
+//! These items were at the crate's root up to 0.1.0 (CHANGELOG, "Changed").
 //!
 //! ```
 //! use parry2d_f64::math::Pose;

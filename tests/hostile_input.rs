@@ -7,7 +7,7 @@
 //! And the fuzz over the same kinds of input, `hostile_fuzz_of_every_query_keeps_its_promises`
 //! (the hostile batch of `tests/reliability/hostile.rs`: user curves breaking each part of the
 //! contract, polygons of 10⁵ vertices, poses far from the origin, extreme motions), every query
-//! through the fuzz's checks of `tests/adversarial.rs` (`reliability::run_case`, with its limit
+//! through the fuzz's checks of `crates/dev/tests/adversarial.rs` (`reliability::run_case`, with its limit
 //! per call). f32 sizes are in `crates/smooth-ccd2d-f32/tests/f32_sizes.rs`.
 //!
 //! Run with `cargo test --test hostile_input -- --nocapture` to see the counts.
