@@ -433,12 +433,11 @@ fn growth_tables() {
         points.push((n as f64, o, p, w));
     }
     panels.push(("turns before impact (20 rad/s)", "turns N before impact", points));
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/figures/toi_growth.png");
+    // The bench belongs to the member `crates/dev`: the repository's root is two folders up.
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let path = root.join("docs/figures/toi_growth.png");
     match plot_growth(&path, &panels) {
-        Ok(()) => println!(
-            "\nPlot: `{}`.",
-            path.strip_prefix(env!("CARGO_MANIFEST_DIR")).unwrap_or(&path).display()
-        ),
+        Ok(()) => println!("\nPlot: `{}`.", path.strip_prefix(&root).unwrap_or(&path).display()),
         Err(e) => println!("\n(plot not written: {e})"),
     }
 }

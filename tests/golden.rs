@@ -3,7 +3,7 @@
 //! code between modules) must leave every digest here unchanged; a change of behaviour shows
 //! which class of inputs it touched, and the new digests are recorded with it, saying why.
 //!
-//! * The fuzz batch of `tests/adversarial.rs` (seed `0x7_5EED`, 40,000 cases): every query of
+//! * The fuzz batch of `crates/dev/tests/adversarial.rs` (seed `0x7_5EED`, 40,000 cases): every query of
 //!   the crate on each case (`reliability::run_case`), FNV-1a over the bits of every number and
 //!   status returned, combined per scenario class.
 //! * rapier: the final state of `scenes::mixed_pile` (153 bodies, fast CCD shots) after 250 steps
@@ -24,7 +24,7 @@ use reliability::{generate, run_case, CLASSES};
 use smooth_ccd2d::SmoothDispatcher;
 use std::collections::BTreeMap;
 
-/// The fuzz batch of `tests/adversarial.rs`.
+/// The fuzz batch of `crates/dev/tests/adversarial.rs`.
 const FUZZ_SEED: u64 = 0x0007_5EED;
 const FUZZ_CASES: u64 = 40_000;
 

@@ -7,7 +7,7 @@
 //! And the fuzz over the same kinds of input, `hostile_fuzz_of_every_query_keeps_its_promises`
 //! (the hostile batch of `tests/reliability/hostile.rs`: user curves breaking each part of the
 //! contract, polygons of 10⁵ vertices, poses far from the origin, extreme motions), every query
-//! through the fuzz's checks of `tests/adversarial.rs` (`reliability::run_case`, with its limit
+//! through the fuzz's checks of `crates/dev/tests/adversarial.rs` (`reliability::run_case`, with its limit
 //! per call). f32 sizes are in `crates/smooth-ccd2d-f32/tests/f32_sizes.rs`.
 //!
 //! Run with `cargo test --test hostile_input -- --nocapture` to see the counts.
@@ -142,7 +142,9 @@ impl ConvexCurve for Broken {
             }
             Break::NanEval if (1.0..=1.1).contains(&phi) => cp.point.x = f64::NAN,
             Break::LongNormal => cp.normal *= 1.01,
-            Break::Unwrapped if !(-PI..PI).contains(&phi) => cp = self.e.eval(smooth_ccd2d::wrap_phi(phi) + 0.5),
+            Break::Unwrapped if !(-PI..PI).contains(&phi) => {
+                cp = self.e.eval(smooth_ccd2d::method::wrap_phi(phi) + 0.5)
+            }
             Break::NoDerivative => cp.d_point = Vector::ZERO,
             _ => {}
         }

@@ -14,7 +14,8 @@ use parry2d_f64::query::{self, ContactManifold, DefaultQueryDispatcher, Persiste
 use parry2d_f64::shape::{
     Ball, ConvexPolygon, Cuboid, FeatureId, HalfSpace, PolygonalFeature, RoundShape, Shape, ShapeType, TypedShape,
 };
-use smooth_ccd2d::{CapsuleEllipse, ConvexCurve, CurvePoint, CustomCurve, Dual2, Ellipse, RoundedPolygon};
+use smooth_ccd2d::method::Dual2;
+use smooth_ccd2d::{CapsuleEllipse, ConvexCurve, CurvePoint, CustomCurve, Ellipse, RoundedPolygon};
 
 /// A user curve for the tests: an ellipse parametrised by its eccentric anomaly (eq. 1), centred
 /// off the origin, with only `eval` and `bounding_radius` implemented (so the default

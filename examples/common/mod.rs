@@ -1,5 +1,5 @@
-//! The helper module of the examples (`#[path = "common/mod.rs"] mod common;`; `tests/figures.rs`
-//! reaches it through `examples/figures.rs`): the output folder, shape outlines, a hand-written
+//! The helper module of the examples (`#[path = "common/mod.rs"] mod common;`; the figures of
+//! `crates/dev` reach it by path): the output folder, shape outlines, a hand-written
 //! SVG writer, and the files of `tests/common` the examples share with the tests, included as
 //! they are (`#[path]`): the rapier world ([`world`]), its scenes ([`scenes`], with the RNG
 //! [`rng`]) and the resting scenes ([`resting`]), the Appendix D scene ([`appendix_d`]), and the

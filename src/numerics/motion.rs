@@ -63,7 +63,7 @@ impl PairFrame {
 
     /// The frame at time `t` of object1 moving by `motion1` relative to object2 moving by
     /// `motion2` (parry's motions; times are absolute), with the time derivatives the jets of
-    /// [`crate::eval_pair`] need.
+    /// [`crate::method::eval_pair`] need.
     pub fn at_time(motion1: &NonlinearRigidMotion, motion2: &NonlinearRigidMotion, t: f64) -> Self {
         RelativeMotion::new(motion1, motion2).frame(t)
     }

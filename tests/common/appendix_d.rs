@@ -3,7 +3,7 @@
 //! ellipse (a = 0.5, b = 1.5) at the origin, over the window [0, 1] s.
 //!
 //! Used by `tests/toi_vs_reference.rs` (through `mod common`) and by `examples/appendix_d.rs`,
-//! `examples/stationary.rs` and `examples/figures.rs` (through `examples/common`).
+//! `examples/stationary.rs` and `crates/dev/examples/figures.rs` (through `examples/common`).
 #![allow(dead_code)]
 
 use parry2d_f64::math::{Pose, Vector};

@@ -16,7 +16,7 @@
 //! * [`watched`]: a dispatcher that passes every query on and reports it (the threads that call
 //!   it, the time of each manifold query).
 //!
-//! `tests/reliability` (the fuzz generator of `tests/adversarial.rs`, `tests/golden.rs` and
+//! `tests/reliability` (the fuzz generator of `crates/dev/tests/adversarial.rs`, `tests/golden.rs` and
 //! `tests/threads.rs`) draws from [`rng`] too.
 #![allow(dead_code)]
 

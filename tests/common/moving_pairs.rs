@@ -8,7 +8,7 @@ use super::world::World;
 use parry2d_f64::query::QueryDispatcher;
 use rapier2d_f64::prelude::*;
 use smooth_ccd2d::{
-    CapsuleEllipse, ConvexCurve, CoreContactHooks, CurvePoint, CustomCurve, Dual2, Ellipse, MovingPairs,
+    method::Dual2, CapsuleEllipse, ConvexCurve, CoreContactHooks, CurvePoint, CustomCurve, Ellipse, MovingPairs,
     MovingPairsOptions, MovingPairsReport, RoundedPolygon, SmoothDispatcher,
 };
 use std::time::{Duration, Instant};

@@ -4,7 +4,7 @@
 //!
 //! [`Rng`] draws the scenarios of `scenarios.rs`, the fuzz cases of `tests/reliability`, and the
 //! random configurations of `tests/parry_shapes.rs`, `tests/distance_vs_parry.rs`,
-//! `tests/adversarial.rs` and `tests/threads.rs`. [`Lcg`] draws the pile of `scenes.rs` (used by
+//! `crates/dev/tests/adversarial.rs` and `tests/threads.rs`. [`Lcg`] draws the pile of `scenes.rs` (used by
 //! `examples/pile.rs` and the pile benchmarks through `examples/common` and `benches/support`).
 #![allow(dead_code)]
 

@@ -197,7 +197,9 @@ impl ConvexCurve for Liar {
             }
             Lie::NanEval if (0.5..0.7).contains(&phi) => cp.point = Vector::new(f64::NAN, 0.0),
             Lie::LongNormal => cp.normal *= 1.01,
-            Lie::Unwrapped if !(-PI..PI).contains(&phi) => cp = self.base().eval(smooth_ccd2d::wrap_phi(phi) + 0.5),
+            Lie::Unwrapped if !(-PI..PI).contains(&phi) => {
+                cp = self.base().eval(smooth_ccd2d::method::wrap_phi(phi) + 0.5)
+            }
             Lie::NoDerivative => cp.d_point = Vector::ZERO,
             Lie::F32Eval => {
                 cp.point = round32(cp.point);

@@ -1,4 +1,4 @@
-//! The fuzz generator, shared by `tests/adversarial.rs`, `tests/threads.rs` and `tests/golden.rs`
+//! The fuzz generator, shared by `crates/dev/tests/adversarial.rs`, `tests/threads.rs` and `tests/golden.rs`
 //! (each declares `mod common;` beside `mod reliability;`): a deterministic generator of random
 //! and adversarial inputs ([`generate`], drawing from the common splitmix64 generator of
 //! `tests/common/rng.rs` seeded with [`Rng::mixed`]), and [`run_case`], which puts one input

@@ -1,20 +1,62 @@
 //! # smooth-ccd2d-f32
 //!
-//! [`smooth-ccd2d`](smooth_ccd2d) for **parry2d and rapier2d in f32** — the builds Bevy games use
-//! through bevy_rapier2d. The same shapes ([`Ellipse`], [`RoundedPolygon`], [`CapsuleEllipse`],
-//! [`CustomCurve`]) and the same drop-in [`SmoothDispatcher`], with f32 at the boundary:
+//! [`smooth-ccd2d`](smooth_ccd2d) for **parry2d 0.31 and rapier2d 0.36 in f32** — the builds Bevy
+//! games use through bevy_rapier2d 0.37. The same smooth convex shapes ([`Ellipse`],
+//! [`RoundedPolygon`], [`CapsuleEllipse`], [`CustomCurve`] for your own curves) and the same
+//! drop-in [`SmoothDispatcher`], which makes rapier's contacts and continuous collision detection
+//! exact for them, with f32 at the boundary and f64 inside.
+//!
+//! ## Quick start: rapier2d (and bevy_rapier2d)
 //!
 //! ```
 //! use rapier2d::prelude::*;
-//! use smooth_ccd2d_f32::{Ellipse, RoundedPolygon, SmoothDispatcher};
+//! use smooth_ccd2d_f32::{Ellipse, SmoothDispatcher};
 //!
-//! let mut colliders = ColliderSet::new();
-//! colliders.insert(ColliderBuilder::new(SharedShape::new(Ellipse::new(0.5, 0.2))).build());
-//! colliders.insert(ColliderBuilder::new(SharedShape::new(RoundedPolygon::regular(7, 1.0, 0.15))).build());
+//! let mut world = PhysicsWorld::default();
+//! world.gravity = Vector::ZERO;
 //! // The one line that adopts the crate: the narrow phase's query dispatcher.
-//! let narrow_phase = NarrowPhase::with_query_dispatcher(SmoothDispatcher::default());
-//! # let _ = narrow_phase;
+//! world.narrow_phase = NarrowPhase::with_query_dispatcher(SmoothDispatcher::default());
+//! world.insert(RigidBodyBuilder::fixed().translation(Vector::new(5.0, 0.0)), ColliderBuilder::cuboid(0.025, 2.0));
+//! let (shot, _) = world.insert(
+//!     RigidBodyBuilder::dynamic().linvel(Vector::new(300.0, 0.0)).angvel(200.0).allow_fast_rotation(true).ccd_enabled(true),
+//!     ColliderBuilder::new(SharedShape::new(Ellipse::new(0.5, 0.2))),
+//! );
+//! for _ in 0..20 {
+//!     world.step();
+//! }
+//! assert!(world.bodies[shot].translation().x < 5.0, "stopped in front of the wall");
 //! ```
+//!
+//! In bevy_rapier2d 0.37 the same dispatcher goes into the rapier context in a startup system
+//! (`RapierContextSimulation::set_query_dispatcher(SmoothDispatcher::default())`), a shape into
+//! `Collider::from(SharedShape::new(...))`, and a fast-spinning body gets `AllowFastRotation`:
+//! the repository's README ("Bevy") and `bevy-example/` give the exact lines.
+//!
+//! ## Quick start: a time of impact
+//!
+//! ```
+//! use parry2d::math::{Pose, Vector};
+//! use parry2d::query::NonlinearRigidMotion;
+//! use parry2d::shape::Cuboid;
+//! use smooth_ccd2d_f32::{shape_time_of_impact, RoundedPolygon, ToiOptions, ToiStatus};
+//!
+//! // A rounded heptagon at (−2, 0) moving at 10 m/s and spinning at 30 rad/s, towards a wall.
+//! let hept = RoundedPolygon::regular(7, 0.5, 0.05);
+//! let wall = Cuboid::new(Vector::new(0.05, 2.0));
+//! let m1 = NonlinearRigidMotion::new(Pose::translation(-2.0, 0.0), Vector::ZERO, Vector::new(10.0, 0.0), 30.0);
+//! let m2 = NonlinearRigidMotion::identity();
+//! let r = shape_time_of_impact(&hept, &m1, &wall, &m2, 0.0, 1.0, &ToiOptions::default()).unwrap();
+//! assert_eq!(r.status, ToiStatus::Hit);
+//! assert!(r.time > 0.13 && r.time < 0.15);
+//! ```
+//!
+//! ## Guarantees, in brief
+//!
+//! The f64 crate's guarantees for the f32 inputs, each answer rounded once: a time of impact
+//! rounded *down* (never later than the exact one), boxes outward, thicknesses down, everything
+//! else to nearest; no NaN or infinity (an answer outside f32's range is `Err(Unsupported)`);
+//! mass properties finite at every accepted size. The details follow; the package's README and the
+//! repository's `docs/` (rapier.md for rapier and Bevy) give the rest.
 //!
 //! ## Precision: f64 inside, f32 at the boundary
 //!
@@ -48,7 +90,7 @@
 //! (`smooth-ccd2d`'s composite routing instantiated for parry2d), `cast`
 //! ([`shape_time_of_impact`]).
 
-#![warn(missing_docs)]
+#![deny(missing_docs)]
 
 mod cast;
 mod composite;

@@ -162,7 +162,7 @@ impl TimeOfImpact {
 /// One event of the tracked path, for figures and debugging ([`crate::time_of_impact_traced`]).
 ///
 /// φ is recorded unwrapped — continuous along the path, so it may leave [−π, π) after turns;
-/// wrap it with [`crate::wrap_phi`] to evaluate or draw.
+/// wrap it with [`crate::method::wrap_phi`] to evaluate or draw.
 #[derive(Copy, Clone, Debug, PartialEq)]
 pub enum TraceEvent {
     /// The starting point from the stationary distance.

@@ -14,7 +14,9 @@
 //!
 //! Run with `cargo test --test adversarial -- --nocapture` to see the measurements.
 
+#[path = "../../../tests/common/mod.rs"]
 mod common;
+#[path = "../../../tests/reliability/mod.rs"]
 mod reliability;
 
 use parry2d_f64::math::{Pose, Vector};

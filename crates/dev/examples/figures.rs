@@ -1,7 +1,8 @@
 //! Writes the specification's figures, computed from the crate's own functions, as PNG and SVG
 //! files into a folder (default `target/figures`).
 //!
-//! Run: `cargo run --release --example figures -- [DIR]`
+//! Run: `cargo run --release --example figures -- [DIR]` (from the workspace's root; the example
+//! belongs to the dev-only member `crates/dev`, whose dependencies draw the figures)
 //!
 //! Pure Rust: plotters draws the bitmaps and the SVG files; text uses DejaVu Sans (Bitstream
 //! Vera licence) embedded by the `dejavu` crate, so no system font library is needed.
@@ -21,7 +22,7 @@
 //! * `fig6_appendix_d`: the heptagon spinning at 30 rad/s against an ellipse: the shapes up to the
 //!   impact and distanceSide(φ, t) with the tracked path.
 
-#[path = "common/mod.rs"]
+#[path = "../../../examples/common/mod.rs"]
 mod common;
 
 use common::appendix_d;
@@ -30,7 +31,7 @@ use parry2d_f64::query::NonlinearRigidMotion;
 use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
-use smooth_ccd2d::{eval_pair, PairFrame};
+use smooth_ccd2d::method::{eval_pair, PairFrame};
 use smooth_ccd2d::{
     stationary_distance, time_of_impact_traced, CapsuleEllipse, ConvexCurve, DistanceOptions, Ellipse, RoundedPolygon,
     ToiOptions, ToiStatus, TraceEvent,
@@ -625,7 +626,7 @@ trait Wrapped {
 impl Wrapped for TraceEvent {
     /// The event with φ wrapped into [−π, π) (the tracker lets φ run past ±π).
     fn wrapped(&self) -> TraceEvent {
-        let w = smooth_ccd2d::wrap_phi;
+        let w = smooth_ccd2d::method::wrap_phi;
         match *self {
             TraceEvent::Start { phi, t, distance } => TraceEvent::Start {
                 phi: w(phi),
