@@ -124,7 +124,7 @@ pub enum DistanceStatus {
     /// distance, of either sign. Deep overlaps whose maximum is flat or tied (coincident or
     /// concentric shapes, a disc centred on a polygon's corner) reached it before the search's
     /// sinusoid bound (module docs); none of the 336 coincident and concentric pairs of
-    /// `tests/adversarial.rs` does now (13 did). A caller's small `max_evaluations` still can.
+    /// `crates/dev/tests/adversarial.rs` does now (13 did). A caller's small `max_evaluations` still can.
     OutOfIterations,
 }
 

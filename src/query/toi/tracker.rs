@@ -168,7 +168,7 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
     /// (|φ| ≈ 6e3) the best root the corrector could reach was 2.4e-12 from the true one, F
     /// there was 3.1e-3 = 7e-9·s below the distance, the contact test saw that low value and a
     /// `Hit` was reported early (`thin_capsule_arc_against_thin_ellipse_hit_is_on_target` in
-    /// `tests/adversarial.rs`). F is a lower bound on the distance at any φ, so the error is
+    /// `crates/dev/tests/adversarial.rs`). F is a lower bound on the distance at any φ, so the error is
     /// always on the early side, and only its size depends on |φ|.
     ///
     /// Kept in [−π, π) at every accepted point (a step moves φ by a few radians at most: the
