@@ -5,6 +5,7 @@
 
 mod common;
 
+use common::curves::EccentricEllipse;
 use common::rng::Rng;
 use core::f64::consts::PI;
 use parry2d_f64::bounding_volume::Aabb;
@@ -14,40 +15,7 @@ use parry2d_f64::query::{self, ContactManifold, DefaultQueryDispatcher, Persiste
 use parry2d_f64::shape::{
     Ball, ConvexPolygon, Cuboid, FeatureId, HalfSpace, PolygonalFeature, RoundShape, Shape, ShapeType, TypedShape,
 };
-use smooth_ccd2d::method::Dual2;
-use smooth_ccd2d::{CapsuleEllipse, ConvexCurve, CurvePoint, CustomCurve, Ellipse, RoundedPolygon};
-
-/// A user curve for the tests: an ellipse parametrised by its eccentric anomaly (eq. 1), centred
-/// off the origin, with only `eval` and `bounding_radius` implemented (so the default
-/// `phi_range_of_normal` and `support_point` are exercised).
-#[derive(Debug)]
-struct EccentricEllipse {
-    a: f64,
-    b: f64,
-    center: Vector,
-}
-
-impl ConvexCurve for EccentricEllipse {
-    fn eval(&self, phi: f64) -> CurvePoint {
-        let x = Dual2::var(phi);
-        let (c, s) = (x.cos(), x.sin());
-        let (nx, ny) = (c.scale(self.b), s.scale(self.a));
-        let inv = (nx * nx + ny * ny).sqrt().recip();
-        let (px, py) = (c.scale(self.a), s.scale(self.b));
-        let (nx, ny) = (nx * inv, ny * inv);
-        CurvePoint {
-            point: Vector::new(px.v + self.center.x, py.v + self.center.y),
-            d_point: Vector::new(px.d, py.d),
-            dd_point: Vector::new(px.dd, py.dd),
-            normal: Vector::new(nx.v, ny.v),
-            d_normal: Vector::new(nx.d, ny.d),
-            dd_normal: Vector::new(nx.dd, ny.dd),
-        }
-    }
-    fn bounding_radius(&self) -> f64 {
-        self.center.length() + self.a.max(self.b)
-    }
-}
+use smooth_ccd2d::{CapsuleEllipse, ConvexCurve, CustomCurve, Ellipse, RoundedPolygon};
 
 fn custom_ellipse() -> CustomCurve {
     CustomCurve::new(EccentricEllipse {

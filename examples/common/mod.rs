@@ -12,6 +12,8 @@ pub mod appendix_d;
 pub mod ccd_judge;
 #[path = "../../tests/common/ccd_scenes.rs"]
 pub mod ccd_scenes;
+#[path = "../../tests/common/curves.rs"]
+pub mod curves;
 #[path = "../../tests/common/moving_pairs.rs"]
 pub mod moving_pairs;
 #[path = "../../tests/common/moving_scenes.rs"]

@@ -23,6 +23,7 @@
 pub mod appendix_d;
 pub mod ccd_judge;
 pub mod ccd_scenes;
+pub mod curves;
 pub mod moving_pairs;
 pub mod moving_scenes;
 pub mod reference;

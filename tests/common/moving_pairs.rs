@@ -4,12 +4,13 @@
 //! through each other ([`Judge`]). The scenes themselves are in `moving_scenes.rs`.
 #![allow(dead_code)]
 
+use super::curves::EccentricEllipse;
 use super::world::World;
 use parry2d_f64::query::QueryDispatcher;
 use rapier2d_f64::prelude::*;
 use smooth_ccd2d::{
-    method::Dual2, CapsuleEllipse, ConvexCurve, CoreContactHooks, CurvePoint, CustomCurve, Ellipse, MovingPairs,
-    MovingPairsOptions, MovingPairsReport, RoundedPolygon, SmoothDispatcher,
+    CapsuleEllipse, CoreContactHooks, CustomCurve, Ellipse, MovingPairs, MovingPairsOptions, MovingPairsReport,
+    RoundedPolygon, SmoothDispatcher,
 };
 use std::time::{Duration, Instant};
 
@@ -73,7 +74,7 @@ impl Family {
             Family::Ellipse => SharedShape::new(Ellipse::new(0.5 * s, 0.2 * s)),
             Family::Heptagon => SharedShape::new(RoundedPolygon::regular(7, 0.4 * s, 0.06 * s)),
             Family::CapsuleEllipse => SharedShape::new(CapsuleEllipse::new(0.12 * s, 0.15 * s, 0.3 * s)),
-            Family::UserCurve => SharedShape::new(CustomCurve::new(Egg {
+            Family::UserCurve => SharedShape::new(CustomCurve::new(EccentricEllipse {
                 a: 0.45 * s,
                 b: 0.25 * s,
                 center: Vector::new(0.05 * s, -0.03 * s),
@@ -88,37 +89,6 @@ impl Family {
             Family::Hexagon => SharedShape::convex_polyline(regular(6, 0.4 * s)).expect("a convex hexagon"),
             Family::Plank => SharedShape::cuboid(1.5 * s, 0.025 * s),
         }
-    }
-}
-
-/// A user's curve: an ellipse off its local origin, with only `eval` and `bounding_radius`
-/// (the gap tracker takes it: it does not claim strict convexity).
-#[derive(Debug)]
-pub struct Egg {
-    pub a: f64,
-    pub b: f64,
-    pub center: Vector,
-}
-
-impl ConvexCurve for Egg {
-    fn eval(&self, phi: f64) -> CurvePoint {
-        let x = Dual2::var(phi);
-        let (c, s) = (x.cos(), x.sin());
-        let (nx, ny) = (c.scale(self.b), s.scale(self.a));
-        let inv = (nx * nx + ny * ny).sqrt().recip();
-        let (px, py) = (c.scale(self.a), s.scale(self.b));
-        let (nx, ny) = (nx * inv, ny * inv);
-        CurvePoint {
-            point: Vector::new(px.v + self.center.x, py.v + self.center.y),
-            d_point: Vector::new(px.d, py.d),
-            dd_point: Vector::new(px.dd, py.dd),
-            normal: Vector::new(nx.v, ny.v),
-            d_normal: Vector::new(nx.d, ny.d),
-            dd_normal: Vector::new(nx.dd, ny.dd),
-        }
-    }
-    fn bounding_radius(&self) -> f64 {
-        self.center.length() + self.a.max(self.b)
     }
 }
 
