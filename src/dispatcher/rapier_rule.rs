@@ -345,7 +345,7 @@ pub(crate) fn start_contact_answer(
 /// docs), `start` its contact with the target at the start (`None`: a pair the contact query
 /// does not read, level 0), `radius` the core's: 0, the core reaching the target, when the
 /// core starts apart; when it starts touching or in — a body the solver has left jammed with
-/// its core against a wall, a residual approach of a few mm/s across a motion of tens of m/s
+/// its core against a wall, a residual approach of a few cm/s across a motion of tens of m/s
 /// along the wall — [`CastPolicy::ALLOWANCE`] of its radius below where it starts, never below
 /// [`CORE_DEPTH_LIMIT`] of it. The body's centre then stays at least (1 − CORE_DEPTH_LIMIT) of
 /// the core's radius off every target, and a jammed body moves on along the wall instead of
