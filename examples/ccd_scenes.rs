@@ -8,7 +8,8 @@
 //! step time (with the ratio, this crate's over rapier's), then the cases that failed.
 //!
 //! Run: `cargo run --release --example ccd_scenes` (optionally a family name, dashes for spaces,
-//! to run only it, and `--no-recycling` to run with rapier's contact recycling off).
+//! to run only it, `--no-recycling` to run with rapier's contact recycling off, and
+//! `--recycle-distance=D` to set rapier's `normalized_contact_recycle_distance`, 0.05 by default).
 
 #[path = "common/mod.rs"]
 mod common;
@@ -20,11 +21,20 @@ fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     // `--no-recycling`: rapier's contact recycling off (`IntegrationParameters::contact_recycling`).
     let recycling = !args.iter().any(|a| a == "--no-recycling");
+    // `--recycle-distance=D`: rapier's `normalized_contact_recycle_distance` (0.05 by default).
+    let recycle_distance = args
+        .iter()
+        .find_map(|a| a.strip_prefix("--recycle-distance="))
+        .map(|d| d.parse::<f64>().expect("--recycle-distance=D, D a number"));
     let filter = args.iter().find(|a| !a.starts_with("--"));
     let cases: Vec<_> = all_cases()
         .into_iter()
         .filter(|c| filter.is_none_or(|f| c.family.name().replace(' ', "-") == *f))
-        .map(|c| common::ccd_scenes::Case { recycling, ..c })
+        .map(|c| common::ccd_scenes::Case {
+            recycling,
+            recycle_distance,
+            ..c
+        })
         .collect();
     let t = std::time::Instant::now();
     let outcomes = run_all(&cases);
@@ -32,7 +42,11 @@ fn main() {
         "CCD scene suite: {} cases, dt = 1/60 s; rapier's caps lifted in {} of them (speed > 400 m/s or spin > 47 rad/s); contact recycling {}",
         cases.len(),
         cases.iter().filter(|c| c.lifted()).count(),
-        if recycling { "on (rapier's default)" } else { "off" }
+        match (recycling, recycle_distance) {
+            (false, _) => "off".to_string(),
+            (true, None) => "on (rapier's default)".to_string(),
+            (true, Some(d)) => format!("on, recycle distance {d}"),
+        }
     );
     print!("{}", table(&cases, &outcomes));
     for (k, m) in Method::BOTH.iter().enumerate() {

@@ -136,3 +136,83 @@ fn a_disc_driven_into_a_wall_of_no_thickness_is_stopped_the_allowance_deep() {
         }
     }
 }
+
+/// The wedge of the CCD scene suite (two `Segment`s, 20° apart, apex at (6, 0)) with the 8:1
+/// thin ellipse jammed across the upper one near the apex, as the suite's case (acute wedge,
+/// thin ellipse, 1000 m/s, 600 rad/s) left it: its centre over the segment, its deepest point
+/// past the segment's line beyond the apex. The least translation that separates the two
+/// shapes points out through the apex, where the body cannot go (its core keeps its centre in
+/// the wedge); the contact is taken from the centre's side: the segment's own normal towards
+/// the centre, and a depth that is the least translation along it clearing the segment.
+#[test]
+fn a_thin_ellipse_wedged_past_the_apex_of_two_segments_is_pushed_back_into_the_wedge() {
+    use parry2d_f64::query::{ContactManifold, PersistentQueryDispatcher, PointQuery};
+    let half = core::f64::consts::PI / 18.0;
+    let apex = Vector::new(6.0, 0.0);
+    let up = apex + Vector::new(-8.0 * half.cos(), 8.0 * half.sin());
+    let wall = Segment::new(up, apex);
+    let body = Ellipse::new(0.4, 0.05);
+    let pose = Pose::new(Vector::new(5.803533, 0.021950), 0.8284);
+    let mut manifolds: Vec<ContactManifold<(), ()>> = Vec::new();
+    SmoothDispatcher::default()
+        .contact_manifolds(&pose, &wall, &body, 0.002, &mut manifolds, &mut None)
+        .expect("answered");
+    let m = &manifolds[0];
+    // The segment's normal towards the body's centre (below the upper wall).
+    let towards_centre = Vector::new(-half.sin(), -half.cos());
+    assert!(
+        (m.local_n1 - towards_centre).length() < 1e-12,
+        "normal {:?}",
+        m.local_n1
+    );
+    let depth = -m.points[0].dist;
+    assert!(depth > 0.0, "depth {depth}");
+    // That depth along that normal clears the segment; a little less does not (the segment
+    // sampled every 0.1 mm, its ends included, against the ellipse's inside).
+    let apart = |by: f64| {
+        let moved = Pose::from_parts(pose.translation + towards_centre * by, pose.rotation);
+        (0..=80_000).all(|k| {
+            let q = up.lerp(apex, k as f64 / 80_000.0);
+            !body.contains_local_point(moved.inverse_transform_point(q))
+        })
+    };
+    println!("one-sided depth {depth:.6}");
+    assert!(apart(depth + 1e-9) && !apart(depth - 1e-6), "depth {depth}");
+}
+
+/// A sliver (the suite's: 1 m long, its centroid 0.03 from its long side) meeting a `Polyline`
+/// wall with the tip of its long side, the side 0.3 rad off the wall: the part's manifold has
+/// the tip's contact and, in place of the side's far end (0.3 away, beyond the prediction: a
+/// speculative point rapier keeps only when the velocities close it, which a spin lifting that
+/// end does not), the sliver's core contact, which holds its centre whatever the spin (the
+/// chain box of the CCD scene suite, a sliver at 3000 m/s: frozen with the far end's point).
+/// A side resting flat on the wall (both ends within the prediction) keeps both ends.
+#[test]
+fn a_polyline_part_holds_the_core_contact_of_a_body_whose_far_face_point_is_beyond_the_prediction() {
+    use parry2d_f64::query::{ContactManifold, PersistentQueryDispatcher};
+    use smooth_ccd2d::RoundedPolygon;
+    let sliver = RoundedPolygon::new(
+        &[Vector::new(-0.5, 0.0), Vector::new(-0.25, 0.0), Vector::new(0.5, 0.125)],
+        0.0,
+    );
+    let wall = Polyline::new(vec![Vector::new(-10.0, 0.0), Vector::new(10.0, 0.0)], None);
+    // The long side (−0.5, 0)–(0.5, 0.125) facing the wall (its outward normal turned down),
+    // turned by `tilt` from it, its end (−0.5, 0) on the wall and the body above.
+    let at = |tilt: f64| {
+        let side = Vector::new(1.0, 0.125);
+        let rot = parry2d_f64::math::Rotation::new(core::f64::consts::PI - tilt - side.y.atan2(side.x));
+        let low = rot * Vector::new(-0.5, 0.0);
+        Pose::from_parts(Vector::new(0.0, 0.0) - low, rot)
+    };
+    let core = |tilt: f64| {
+        let mut manifolds: Vec<ContactManifold<(), ()>> = Vec::new();
+        SmoothDispatcher::default()
+            .contact_manifolds(&at(tilt), &wall, &sliver, 0.002, &mut manifolds, &mut None)
+            .expect("answered");
+        let pts = &manifolds[0].points;
+        assert_eq!(pts.len(), 2, "tilt {tilt}: {pts:?}");
+        smooth_ccd2d::__is_core_feature(pts[1].fid2.0)
+    };
+    assert!(core(0.3), "tilted: the core contact is the second point");
+    assert!(!core(0.0), "flat: both ends of the side");
+}

@@ -282,7 +282,7 @@ fn manifold_from_contact<M, C: Default + Copy>(
                     }
                 };
                 let pts = [on_body(&manifold.points[0]), on_body(&manifold.points[1])];
-                if !k.straddled_by(c.normal, pts) {
+                if !k.straddled_by(c.normal, pts) || manifold.points[1].dist > prediction {
                     manifold.points[1] = core_point;
                 }
             }

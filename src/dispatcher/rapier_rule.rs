@@ -25,10 +25,11 @@
 //!    what the step's *translation* does to it. The fast body's *core* — the disc of
 //!    [`CastPolicy::CORE`] of its inradius r about its rotation centre, which its rotation does
 //!    not move — must not reach the target: the centre of a body never passes a wall of any
-//!    thickness, a segment included. And the translation alone (the motion without its spin)
-//!    may deepen the contact by at most the *allowance* [`CastPolicy::ALLOWANCE`]·r a step,
-//!    below the start's depth, so a body driven into a wall is stopped and one sliding or
-//!    resting on it moves freely. The answer is the earlier of the two, at least
+//!    thickness, a segment included (a core that starts touching the target may go a quarter
+//!    of its radius deeper a step, never past half of it: `core_level`). And the translation
+//!    alone (the motion without its spin) may deepen the contact by at most the *allowance*
+//!    [`CastPolicy::ALLOWANCE`]·r a step, below the start's depth, so a body driven into a
+//!    wall is stopped and one sliding or resting on it moves freely. The answer is the earlier of the two, at least
 //!    [`CastPolicy::START_NUDGE`] of the window after the start (rapier would discard the start
 //!    itself), or no hit.
 //!
@@ -324,7 +325,8 @@ pub(crate) fn start_contact_answer(
                 g2: f.other_g,
                 m2: f.other_m,
             };
-            first_time(&p, c, 0.0, tol, None, general)
+            let k = exact_contact(&super::cast::pos12_at(&centre, f.other_m, c.t0), &core, f.other_g, None);
+            first_time(&p, c, core_level(k, CastPolicy::CORE * r, tol), tol, k, general)
         } else {
             general().map(|t| (t.status != ToiStatus::NoHit).then_some(t.time))
         }
@@ -338,6 +340,28 @@ pub(crate) fn start_contact_answer(
     };
     toi_to_parry(Ok(earliest.map(|t| hit_at(c, t.max(nudge), d0))))
 }
+
+/// The level the core's signed distance may come down to in a step (rule 3 of the module
+/// docs), `start` its contact with the target at the start (`None`: a pair the contact query
+/// does not read, level 0), `radius` the core's: 0, the core reaching the target, when the
+/// core starts apart; when it starts touching or in — a body the solver has left jammed with
+/// its core against a wall, a residual approach of a few cm/s across a motion of tens of m/s
+/// along the wall — [`CastPolicy::ALLOWANCE`] of its radius below where it starts, never below
+/// [`CORE_DEPTH_LIMIT`] of it. The body's centre then stays at least (1 − CORE_DEPTH_LIMIT) of
+/// the core's radius off every target, and a jammed body moves on along the wall instead of
+/// being clamped at the start of every step for an approach the step barely takes (the
+/// 8:1 ellipse jammed across the acute wedge of the CCD scene suite was held still for ten
+/// steps, its 55 m/s along the wall lost to 1 mm of approach).
+fn core_level(start: Option<Contact>, radius: Real, tol: Real) -> Real {
+    match start {
+        Some(k) if k.dist <= tol => (k.dist.min(0.0) - CastPolicy::ALLOWANCE * radius).max(-CORE_DEPTH_LIMIT * radius),
+        _ => 0.0,
+    }
+}
+
+/// How deep, as a fraction of its radius, the core of a body that starts touching a target may
+/// go into it ([`core_level`]).
+const CORE_DEPTH_LIMIT: Real = 0.5;
 
 /// The hit of a start contact at time `t`, with the pair's exact contact there for its
 /// witnesses and distance (rapier reads only the time; the witnesses are the pair's own, in

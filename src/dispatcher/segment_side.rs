@@ -12,12 +12,16 @@
 //! segment's line from the centre's side instead: the normal is the line's
 //! normal towards the centre, the depth is how far the body reaches past the line (its support
 //! along the other normal), the point is the body's deepest point and its foot on the line —
-//! if that foot lies on the segment (a body reaching past the line only beyond an end touches
-//! the end, as the exact contact has it). A contact along the segment's normal (a body on the
-//! segment's face, where the exact manifold has its two points) is kept.
+//! if that foot lies on the segment. When the foot lies beyond an end, the depth is how far
+//! the body reaches past the line over the segment, greatest at that end (`beyond_end`: a thin
+//! body wedged past the apex of two segments is pushed back into the wedge, not out through
+//! the apex); a body that reaches past the line only beyond the end touches the end from
+//! beyond it, as the exact contact has it. A contact along the segment's normal (a body on
+//! the segment's face, where the exact manifold has its two points) is kept.
 
 use crate::numerics::math::{perp, Pose, Real, Vector};
 use crate::query::contact::{Contact, ContactPoint, Feature};
+use parry2d_f64::query::Ray;
 use parry2d_f64::shape::{Segment, Shape};
 
 /// The contact `c` of `g1` (at the origin) and `g2` (at `pos12`), one of them a `Segment`, with
@@ -109,6 +113,53 @@ fn one_sided(
     let dist = (p - seg.a).dot(m);
     let foot = p - m * dist;
     let t = (foot - seg.a).dot(along) / len2;
-    let ok = (0.0..=1.0).contains(&t) && dist.is_finite() && p.is_finite();
-    ok.then_some((m, dist, foot, p))
+    if (0.0..=1.0).contains(&t) {
+        return (dist.is_finite() && p.is_finite()).then_some((m, dist, foot, p));
+    }
+    let unit = along / len2.sqrt();
+    if t < 0.0 {
+        beyond_end(body, pose, seg.a, -unit, m)
+    } else {
+        beyond_end(body, pose, seg.b, unit, m)
+    }
+}
+
+/// The one-sided contact (as [`one_sided`]) of a body whose deepest point past the segment's
+/// line lies beyond the segment's end `end` (`along`: the unit direction of the segment
+/// towards that end), or `None` when the body does not reach past the line over the segment
+/// (it touches the end from beyond, as a free end is touched: the exact contact stands).
+///
+/// With h the height past the line (along −m) and τ the position along it, the body's upper
+/// boundary U(τ) (its highest point over τ) is concave where the body spans τ, greatest at the
+/// deepest point's foot τ*, beyond the end here: U grows towards the end over the segment. A
+/// translation δ along m clears the segment when δ ≥ U(τ) for every τ of the segment the body
+/// spans, so the depth is −max U over them: U at the end when the body spans the end's τ (the
+/// ray along m from beyond the line down through the end enters the body at that height —
+/// whether the end is inside the body, a body straddling the apex of two segments, or below
+/// it, a thin body past the apex), else U at the body's extreme point towards the end.
+fn beyond_end(
+    body: &dyn Shape,
+    pose: &Pose,
+    end: Vector,
+    along: Vector,
+    m: Vector,
+) -> Option<(Vector, Real, Vector, Vector)> {
+    let sm = body.as_support_map()?;
+    let height = |p: Vector| (p - end).dot(-m);
+    // The body's extreme point towards the end, and whether the body spans the end's τ.
+    let q = *pose * sm.local_support_point(pose.rotation.inverse() * along);
+    let (on_body, h) = if (q - end).dot(along) <= 0.0 {
+        (q, height(q))
+    } else {
+        // Down along m from beyond the body's reach: the entry point is U at the end.
+        let reach = body.compute_local_bounding_sphere();
+        let far = (pose * reach.center - end).length() + reach.radius;
+        let from = end - m * (2.0 * far);
+        let ray = Ray::new(pose.inverse_transform_point(from), pose.rotation.inverse() * m);
+        let toi = body.cast_local_ray(&ray, 4.0 * far, true)?;
+        let p = from + m * toi;
+        (p, height(p))
+    };
+    let foot = on_body + m * h;
+    (h > 0.0 && h.is_finite() && on_body.is_finite()).then_some((m, -h, foot, on_body))
 }

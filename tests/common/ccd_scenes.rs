@@ -281,6 +281,8 @@ pub struct Case {
     pub variant: usize,
     /// rapier's contact recycling (`IntegrationParameters::contact_recycling`, on by default).
     pub recycling: bool,
+    /// rapier's `normalized_contact_recycle_distance` when not its default (0.05).
+    pub recycle_distance: Option<f64>,
 }
 
 impl Case {
@@ -304,6 +306,7 @@ pub fn all_cases() -> Vec<Case> {
                         spin,
                         variant,
                         recycling: true,
+                        recycle_distance: None,
                     });
                 }
             }
@@ -342,6 +345,9 @@ pub fn build(case: &Case, method: Method) -> Scene {
         world.params.normalized_max_linear_velocity = f64::MAX;
     }
     world.params.contact_recycling = case.recycling;
+    if let Some(d) = case.recycle_distance {
+        world.params.normalized_contact_recycle_distance = d;
+    }
     let mut fixed_list = Vec::new();
     let mut dynamic = Vec::new();
     let mut motor = None;
