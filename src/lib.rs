@@ -136,9 +136,11 @@ mod shapes;
 pub use curve::{ConvexCurve, CurvePoint, SupportJet};
 #[doc(hidden)]
 pub use dispatcher::is_core_feature as __is_core_feature;
-#[cfg(feature = "rapier")]
-pub use dispatcher::CoreContactHooks;
+#[doc(hidden)]
+pub use dispatcher::{impact_weights as __impact_weights, ImpactSide as __ImpactSide};
 pub use dispatcher::{shape_time_of_impact, CastPolicy, SmoothDispatcher};
+#[cfg(feature = "rapier")]
+pub use dispatcher::{CoreContactHooks, OneBounceHooks};
 pub use error::{QueryError, ShapeError, MAX_LENGTH, MAX_VERTICES, MIN_LENGTH};
 #[doc(hidden)]
 pub use moving_pairs::core as __moving_pairs;
