@@ -171,11 +171,9 @@ mod tests {
             .iter()
             .map(|q| (t2.velocity_at(*q) - t1.velocity_at(*q)).dot(n))
             .collect();
-        if w[0] > 0.0 && w[1] > 0.0 {
-            assert!(ends.iter().all(|e| e.abs() < 1e-12), "{w:?} {ends:?}");
-        } else {
-            assert!(ends.iter().all(|e| *e > -1e-12), "{w:?} {ends:?}");
-        }
+        // Both rows push in this case (λ ≈ (3.61, 0.75)): the one row stops both ends.
+        assert!(w[0] > 0.0 && w[1] > 0.0, "{w:?}");
+        assert!(ends.iter().all(|e| e.abs() < 1e-12), "{w:?} {ends:?}");
     }
 
     /// A row moving apart: nothing to replace.
