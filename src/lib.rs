@@ -72,7 +72,9 @@
 //!   With the feature `rapier`: `MovingPairs`, the opt-in pass around rapier's step that stops
 //!   two fast bodies at their exact first contact (rapier never sweeps a bullet against a
 //!   bullet; options [`MovingPairsOptions`], report [`MovingPairsReport`]), and
-//!   `CoreContactHooks`, rapier hooks for bouncing bodies (no bounce on the core contacts).
+//!   `CoreContactHooks`, rapier hooks for bouncing bodies (no bounce on the core contacts), and
+//!   `OneBounceHooks` (opt-in: also one bouncing row per impact, so that rapier's restitution
+//!   adds no energy where flat sides meet).
 //! * **The method** ([`method`]): the jets and the specification's distance functions, for
 //!   writing a curve or studying the algorithm.
 //!
