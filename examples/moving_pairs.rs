@@ -9,7 +9,7 @@
 //! over 10 s (pairs through each other, bodies out, NaN, panics, the pass's share of the step),
 //! and two summary lines, `head-on: …` and `box: …`, the pass's figure first.
 //!
-//! `cargo run --release --example moving_pairs` (about half a minute); `-- --shots` prints
+//! `cargo run --release --example moving_pairs` (a few minutes: the box runs five times); `-- --shots` prints
 //! every head-on shot.
 
 #[path = "common/mod.rs"]
