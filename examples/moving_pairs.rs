@@ -5,17 +5,17 @@
 //!
 //! Prints the head-on table (two bullets at 100–3000 m/s each, spins to 600 rad/s, equal and
 //! unequal sizes, every shape family of the crate and parry's own shapes; momentum and energy
-//! before and after), the crossing and plank tables, the closed box of 50 fast bouncing bodies
+//! before and after, without hooks, with `CoreContactHooks` and with `OneBounceHooks`), the crossing and plank tables, the closed box of 50 fast bouncing bodies
 //! over 10 s (pairs through each other, bodies out, NaN, panics, the pass's share of the step),
 //! and two summary lines, `head-on: …` and `box: …`, the pass's figure first.
 //!
-//! `cargo run --release --example moving_pairs` (about half a minute); `-- --shots` prints
+//! `cargo run --release --example moving_pairs` (a few minutes: the box runs five times); `-- --shots` prints
 //! every head-on shot.
 
 #[path = "common/mod.rs"]
 mod common;
 
-use common::moving_pairs::{Launch, Verdicts};
+use common::moving_pairs::{Hooks, Launch, Verdicts};
 use common::moving_scenes::{
     crossing_shots, head_on_pairs, head_on_shots, pass_options, pile_cost, plank_shots, run_box, run_shot,
     run_shot_with, wall_bounce_energy, BoxResult, PlankWay, ShotResult, BOX_BODIES, BOX_STEPS, HEAD_ON_STEPS,
@@ -49,17 +49,61 @@ fn conservation(r: &ShotResult, launches: &[Launch]) -> (f64, f64) {
 fn main() {
     let every_shot = std::env::args().any(|a| a == "--shots");
     let t = Instant::now();
+    let head = head_on(every_shot);
+    other_scenes();
+    let boxes = the_box();
+    pile_table(&boxes[0]);
+    println!();
+    println!("(ran in {:.1} s)", t.elapsed().as_secs_f64());
+    println!("{head}");
+    box_summary(&boxes);
+}
 
-    // Head-on.
+/// The largest energy ratio, the shots that gained, passed through or went NaN of one column.
+#[derive(Clone, Copy, Debug, Default)]
+struct Column {
+    worst: f64,
+    gained: usize,
+    through: usize,
+    nan: usize,
+}
+
+impl Column {
+    fn add(&mut self, r: &ShotResult) {
+        self.worst = self.worst.max(r.e1 / r.e0.max(f64::MIN_POSITIVE));
+        self.gained += usize::from(gains(r));
+        self.through += usize::from(r.through());
+        self.nan += usize::from(!r.finite);
+    }
+}
+
+/// The head-on table's columns over every shot: the pass, with each hooks, slowed; and the
+/// shots where the pass gained while the slowed shot did not.
+#[derive(Clone, Copy, Debug, Default)]
+struct Tally {
+    pass: Column,
+    alone: Column,
+    core: Column,
+    one: Column,
+    slowed: Column,
+    pass_only: usize,
+}
+
+/// The head-on table, its notes and the wall reference; returns the summary line.
+fn head_on(every_shot: bool) -> String {
     let shots = head_on_shots();
     let results: Vec<Both> = shots.iter().map(|s| both(&s.launches(), HEAD_ON_STEPS, 0.5)).collect();
+    // The same shots with `CoreContactHooks` (no bounce on the core contacts), and with
+    // `OneBounceHooks` (and one bouncing row per impact).
+    let with_hooks = |hooks: Hooks| -> Vec<ShotResult> {
+        shots
+            .iter()
+            .map(|s| run_shot_with(&s.launches(), HEAD_ON_STEPS, 0.5, Some(pass_options()), hooks))
+            .collect()
+    };
+    let (core, one) = (with_hooks(Hooks::Core), with_hooks(Hooks::OneBounce));
     // The same shots slowed to 1 m/s in rapier alone: the collision as rapier's solver resolves
     // it without any CCD (the reference for the energy).
-    // The same shots with `CoreContactHooks` (no bounce on the core contacts).
-    let hooked: Vec<ShotResult> = shots
-        .iter()
-        .map(|s| run_shot_with(&s.launches(), HEAD_ON_STEPS, 0.5, Some(pass_options()), true))
-        .collect();
     let slowed: Vec<ShotResult> = shots
         .iter()
         .map(|s| run_shot(&s.slowed().launches(), SLOW_STEPS, 0.5, None))
@@ -71,55 +115,43 @@ fn main() {
         shots.len()
     );
     println!(
-        "{:<34} {:>5} {:>12} {:>12} {:>14} {:>12} {:>14} {:>12}",
+        "{:<34} {:>5} {:>12} {:>12} {:>14} {:>12} {:>12} {:>14} {:>12}",
         "pair",
         "shots",
         "through/pass",
         "through/alone",
         "max E1/E0 pass",
-        "with hooks",
+        "core hooks",
+        "one bounce",
         "E1/E0 slowed",
         "max |Δp| pass"
     );
-    let mut worst_e = 0.0f64;
-    let (mut gained, mut gained_slow, mut worst_slow, mut gained_pass_only) = (0, 0, 0.0f64, 0);
-    let (mut gained_hooked, mut through_hooked, mut worst_hooked) = (0, 0, 0.0f64);
+    let mut all = Tally::default();
     for (a, b) in head_on_pairs() {
-        let rows: Vec<(usize, &Both)> = results
-            .iter()
-            .enumerate()
-            .filter(|(i, _)| shots[*i].a == a && shots[*i].b == b)
-            .collect();
-        let through = rows.iter().filter(|(_, r)| r.pass.through()).count();
-        let alone = rows.iter().filter(|(_, r)| r.alone.through()).count();
-        let (mut e, mut p, mut e_slow, mut e_hooked) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
-        for (i, r) in &rows {
-            let (ei, pi) = conservation(&r.pass, &shots[*i].launches());
-            let slow = &slowed[*i];
-            let h = &hooked[*i];
-            e_hooked = e_hooked.max(h.e1 / h.e0.max(f64::MIN_POSITIVE));
-            gained_hooked += usize::from(gains(h));
-            through_hooked += usize::from(h.through());
-            e = e.max(ei);
-            p = p.max(pi);
-            e_slow = e_slow.max(slow.e1 / slow.e0.max(f64::MIN_POSITIVE));
-            let (pass_gains, slow_gains) = (gains(&r.pass), gains(slow));
-            gained += usize::from(pass_gains);
-            gained_slow += usize::from(slow_gains);
-            gained_pass_only += usize::from(pass_gains && !slow_gains);
+        let mut row = Tally::default();
+        let mut p = 0.0f64;
+        for i in (0..shots.len()).filter(|i| shots[*i].a == a && shots[*i].b == b) {
+            let r = &results[i];
+            p = p.max(conservation(&r.pass, &shots[i].launches()).1);
+            for t in [&mut row, &mut all] {
+                t.pass.add(&r.pass);
+                t.alone.add(&r.alone);
+                t.core.add(&core[i]);
+                t.one.add(&one[i]);
+                t.slowed.add(&slowed[i]);
+                t.pass_only += usize::from(gains(&r.pass) && !gains(&slowed[i]));
+            }
         }
-        worst_e = worst_e.max(e);
-        worst_slow = worst_slow.max(e_slow);
-        worst_hooked = worst_hooked.max(e_hooked);
         println!(
-            "{:<34} {:>5} {:>12} {:>12} {:>14.9} {:>12.9} {:>14.9} {:>12.2e}",
+            "{:<34} {:>5} {:>12} {:>12} {:>14.9} {:>12.9} {:>12.9} {:>14.9} {:>12.2e}",
             format!("{} / {}", a.name(), b.name()),
-            rows.len(),
-            through,
-            alone,
-            e,
-            e_hooked,
-            e_slow,
+            shots.iter().filter(|s| s.a == a && s.b == b).count(),
+            row.pass.through,
+            row.alone.through,
+            row.pass.worst,
+            row.core.worst,
+            row.one.worst,
+            row.slowed.worst,
             p
         );
     }
@@ -139,6 +171,39 @@ fn main() {
             );
         }
     }
+    head_on_notes(&all, shots.len());
+    let Tally {
+        pass,
+        alone,
+        core,
+        one,
+        slowed,
+        pass_only,
+    } = all;
+    format!(
+        "head-on: {} through of {} shots with the pass (energy gained in {}, largest E after/before {:.6}, in \
+         {pass_only} where the slowed shot gained none; with CoreContactHooks in {}, largest {:.6}; with \
+         OneBounceHooks in {}, largest {:.9}, through {}; NaN in {}); rapier alone: {} through of {} (slowed to \
+         {SLOW_SPEED} m/s: energy gained in {}, largest {:.6})",
+        pass.through,
+        shots.len(),
+        pass.gained,
+        pass.worst,
+        core.gained,
+        core.worst,
+        one.gained,
+        one.worst,
+        one.through,
+        pass.nan,
+        alone.through,
+        shots.len(),
+        slowed.gained,
+        slowed.worst
+    )
+}
+
+/// The notes under the head-on table, and the wall reference.
+fn head_on_notes(all: &Tally, shots: usize) {
     println!(
         "(E1/E0: kinetic energy after over before; slowed: the same shots at {SLOW_SPEED} m/s, spins scaled alike, \
          in rapier alone, which needs no CCD there — rapier's solver on the same collision. A gain is rapier's \
@@ -146,21 +211,25 @@ fn main() {
          approach velocity): two points where flat sides meet, or the exact point and a core contact \
          (docs/rapier.md); the pass keeps every velocity)"
     );
+    let (core, one) = (all.core, all.one);
     println!(
-        "(with hooks: the pass with `CoreContactHooks` installed, restitution 0 on the core contacts' manifolds: \
-         energy gained in {gained_hooked} of {} shots, largest {worst_hooked:.6}, through {through_hooked})",
-        shots.len()
+        "(core hooks: the pass with `CoreContactHooks` installed, restitution 0 on the core contacts' manifolds: \
+         energy gained in {} of {shots} shots, largest {:.6}, through {}; one bounce: the pass with \
+         `OneBounceHooks`, also the two points of an impact merged into one row: energy gained in {}, largest \
+         {:.9}, through {}, NaN in {}; a gain is E1 > E0 (1 + 1e-9))",
+        core.gained, core.worst, core.through, one.gained, one.worst, one.through, one.nan
     );
-    let (wall_gained, wall_shots, wall_worst) = wall_bounce_energy();
+    let (wall_gained, wall_shots, wall_worst) = wall_bounce_energy(Hooks::None);
+    let (wall_gained_one, _, wall_worst_one) = wall_bounce_energy(Hooks::OneBounce);
     println!(
         "(rapier's own CCD, a bullet of every family at a fixed wall, the same speeds and spins, restitution 1: \
-         energy gained in {wall_gained} of {wall_shots} shots, largest {wall_worst:.6})"
+         energy gained in {wall_gained} of {wall_shots} shots, largest {wall_worst:.6}; with `OneBounceHooks` in \
+         {wall_gained_one}, largest {wall_worst_one:.9})"
     );
-    let head_through = results.iter().filter(|r| r.pass.through()).count();
-    let head_alone = results.iter().filter(|r| r.alone.through()).count();
-    let head_nan = results.iter().filter(|r| !r.pass.finite).count();
+}
 
-    // Crossing paths and the plank.
+/// The crossing and plank table.
+fn other_scenes() {
     let crossings = crossing_shots();
     let crossing: Vec<Both> = crossings.iter().map(|s| both(&s.launches(), 20, 0.5)).collect();
     let planks = plank_shots();
@@ -193,22 +262,26 @@ fn main() {
         };
         println!("{what:<52} {n:>5} {p:>12} {a:>12}");
     }
+}
 
-    // The box.
-    let with = run_box(BOX_STEPS, Some(pass_options()), true);
-    let alone = run_box(BOX_STEPS, None, true);
-    let (with_plain, alone_plain) = (
-        run_box(BOX_STEPS, Some(pass_options()), false),
-        run_box(BOX_STEPS, None, false),
-    );
+/// The box's table: with the pass and rapier alone, with `CoreContactHooks`, without hooks, and
+/// with the pass and `OneBounceHooks` (in that order).
+fn the_box() -> [BoxResult; 5] {
+    let boxes = [
+        run_box(BOX_STEPS, Some(pass_options()), Hooks::Core),
+        run_box(BOX_STEPS, None, Hooks::Core),
+        run_box(BOX_STEPS, Some(pass_options()), Hooks::None),
+        run_box(BOX_STEPS, None, Hooks::None),
+        run_box(BOX_STEPS, Some(pass_options()), Hooks::OneBounce),
+    ];
     println!();
     println!(
         "The closed box: {BOX_BODIES} bullets of every family (50–250 m/s, spins to ±300 rad/s), restitution 1, \
          no friction, {BOX_STEPS} steps (10 s); with CoreContactHooks (as docs/rapier.md advises for bouncing \
-         bodies), and the same without them"
+         bodies), without them, and with OneBounceHooks"
     );
     println!(
-        "{:<26} {:>8} {:>10} {:>8} {:>4} {:>4} {:>4} {:>6} {:>9} {:>10} {:>10} {:>7} {:>7} {:>6}",
+        "{:<27} {:>8} {:>10} {:>8} {:>4} {:>4} {:>4} {:>6} {:>9} {:>10} {:>10} {:>7} {:>7} {:>6}",
         "",
         "through",
         "in contact",
@@ -224,12 +297,14 @@ fn main() {
         "stops",
         "casts"
     );
-    for (name, r) in [
-        ("with the pass", &with),
-        ("rapier alone", &alone),
-        ("with the pass, no hooks", &with_plain),
-        ("rapier alone, no hooks", &alone_plain),
-    ] {
+    let names = [
+        "with the pass",
+        "rapier alone",
+        "with the pass, no hooks",
+        "rapier alone, no hooks",
+        "with the pass, one bounce",
+    ];
+    for (name, r) in names.iter().zip(&boxes) {
         box_row(name, r);
     }
     println!(
@@ -237,7 +312,11 @@ fn main() {
          path within the sum of the inradii; grazing: within the bounding radii only, near misses included; out: a \
          centre beyond a wall's outer face; wall: a centre past a wall's inner face)"
     );
-    // The cost where no pair is fast: the mixed pile.
+    boxes
+}
+
+/// The cost where no pair is fast (the mixed pile), and the box's (`with`: the box with the pass).
+fn pile_table(with: &BoxResult) {
     let pile = pile_cost(PILE_STEPS);
     println!();
     println!(
@@ -270,30 +349,25 @@ fn main() {
         BOX_STEPS,
         with.step_time.as_secs_f64() * 1e3,
         with.pass_time.as_secs_f64() * 1e3,
-        share(&with),
+        share(with),
         with.totals.casts
     );
-    println!();
-    println!("(ran in {:.1} s)", t.elapsed().as_secs_f64());
-    println!(
-        "head-on: {head_through} through of {} shots with the pass (energy gained in {gained}, largest E after/before \
-         {worst_e:.6}, in {gained_pass_only} where the slowed shot gained none; with CoreContactHooks in \
-         {gained_hooked}, largest {worst_hooked:.6}; NaN in {head_nan}); rapier alone: \
-         {head_alone} through of {} (slowed to {SLOW_SPEED} m/s: energy gained in {gained_slow}, largest \
-         {worst_slow:.6})",
-        results.len(),
-        results.len()
-    );
+}
+
+/// The `box: …` summary line (the boxes of [`the_box`]).
+fn box_summary(boxes: &[BoxResult; 5]) {
+    let [with, alone, with_plain, alone_plain, with_one] = boxes;
     println!(
         "box: {} pairs through with the pass ({} bodies out of the box, {} into a wall, NaN {}, panic {}; the pass \
          {:.1} % of the step); rapier alone: {} pairs through ({} out, {} into a wall, NaN {}, panic {}); without \
-         CoreContactHooks: {} through and {} out with the pass, {} and {} alone",
+         CoreContactHooks: {} through and {} out with the pass, {} and {} alone; with OneBounceHooks: {} through, {} \
+         out, {} into a wall, NaN {}, panic {}",
         with.verdicts.through,
         with.out_of_box,
         with.in_wall,
         yes(with.nan),
         yes(with.panicked),
-        share(&with),
+        share(with),
         alone.verdicts.through,
         alone.out_of_box,
         alone.in_wall,
@@ -302,7 +376,12 @@ fn main() {
         with_plain.verdicts.through,
         with_plain.out_of_box,
         alone_plain.verdicts.through,
-        alone_plain.out_of_box
+        alone_plain.out_of_box,
+        with_one.verdicts.through,
+        with_one.out_of_box,
+        with_one.in_wall,
+        yes(with_one.nan),
+        yes(with_one.panicked)
     );
 }
 
@@ -331,7 +410,7 @@ fn box_row(name: &str, r: &BoxResult) {
         grazing,
     } = r.verdicts;
     println!(
-        "{name:<26} {through:>8} {crossed_in_contact:>10} {grazing:>8} {:>4} {:>4} {:>4} {:>6} {:>9.3e} {:>10.1} {:>10.1} {:>6.1}% {:>7} {:>6}",
+        "{name:<27} {through:>8} {crossed_in_contact:>10} {grazing:>8} {:>4} {:>4} {:>4} {:>6} {:>9.3e} {:>10.1} {:>10.1} {:>6.1}% {:>7} {:>6}",
         r.out_of_box,
         r.in_wall,
         yes(r.nan),

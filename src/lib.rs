@@ -72,7 +72,9 @@
 //!   With the feature `rapier`: `MovingPairs`, the opt-in pass around rapier's step that stops
 //!   two fast bodies at their exact first contact (rapier never sweeps a bullet against a
 //!   bullet; options [`MovingPairsOptions`], report [`MovingPairsReport`]), and
-//!   `CoreContactHooks`, rapier hooks for bouncing bodies (no bounce on the core contacts).
+//!   `CoreContactHooks`, rapier hooks for bouncing bodies (no bounce on the core contacts), and
+//!   `OneBounceHooks` (opt-in: also one bouncing row per impact, so that rapier's restitution
+//!   adds no energy where flat sides meet).
 //! * **The method** ([`method`]): the jets and the specification's distance functions, for
 //!   writing a curve or studying the algorithm.
 //!
@@ -136,9 +138,11 @@ mod shapes;
 pub use curve::{ConvexCurve, CurvePoint, SupportJet};
 #[doc(hidden)]
 pub use dispatcher::is_core_feature as __is_core_feature;
-#[cfg(feature = "rapier")]
-pub use dispatcher::CoreContactHooks;
+#[doc(hidden)]
+pub use dispatcher::{impact_weights as __impact_weights, ImpactSide as __ImpactSide};
 pub use dispatcher::{shape_time_of_impact, CastPolicy, SmoothDispatcher};
+#[cfg(feature = "rapier")]
+pub use dispatcher::{CoreContactHooks, OneBounceHooks};
 pub use error::{QueryError, ShapeError, MAX_LENGTH, MAX_VERTICES, MIN_LENGTH};
 #[doc(hidden)]
 pub use moving_pairs::core as __moving_pairs;

@@ -53,6 +53,7 @@ mod composite;
 mod core_disc;
 #[cfg(feature = "rapier")]
 mod core_hooks;
+mod impact_row;
 pub(crate) mod inline_polygon;
 pub(crate) mod input_guard;
 mod manifold;
@@ -69,7 +70,9 @@ pub use cast::shape_time_of_impact;
 #[doc(hidden)]
 pub use core_disc::is_core_feature;
 #[cfg(feature = "rapier")]
-pub use core_hooks::CoreContactHooks;
+pub use core_hooks::{CoreContactHooks, OneBounceHooks};
+#[doc(hidden)]
+pub use impact_row::{impact_weights, ImpactSide};
 pub use rapier_rule::CastPolicy;
 
 use crate::error::QueryError;

@@ -10,7 +10,7 @@ use parry2d_f64::query::QueryDispatcher;
 use rapier2d_f64::prelude::*;
 use smooth_ccd2d::{
     CapsuleEllipse, CoreContactHooks, CustomCurve, Ellipse, MovingPairs, MovingPairsOptions, MovingPairsReport,
-    RoundedPolygon, SmoothDispatcher,
+    OneBounceHooks, RoundedPolygon, SmoothDispatcher,
 };
 use std::time::{Duration, Instant};
 
@@ -147,6 +147,29 @@ pub fn radii(shape: &dyn Shape) -> (f64, f64) {
     (inradius, bounding)
 }
 
+/// The rapier hooks a run steps with.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Hooks {
+    /// None (`()`).
+    #[default]
+    None,
+    /// `CoreContactHooks`: no bounce on the core contacts.
+    Core,
+    /// `OneBounceHooks`: `CoreContactHooks` and one bouncing row per impact.
+    OneBounce,
+}
+
+impl From<bool> for Hooks {
+    /// `true`: `CoreContactHooks`; `false`: none.
+    fn from(core: bool) -> Self {
+        if core {
+            Hooks::Core
+        } else {
+            Hooks::None
+        }
+    }
+}
+
 /// The sums of the pass's reports over a run.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Totals {
@@ -186,8 +209,8 @@ pub struct Run {
     pub totals: Totals,
     /// The bodies the pass stopped in the last step, with the fraction of the step where.
     pub stops: Vec<(RigidBodyHandle, f64)>,
-    /// Steps with `CoreContactHooks` ([`Run::with_core_hooks`]).
-    pub core_hooks: bool,
+    /// The hooks it steps with ([`Run::with_hooks`]).
+    pub hooks: Hooks,
 }
 
 impl Run {
@@ -204,17 +227,25 @@ impl Run {
             pass_time: Duration::ZERO,
             totals: Totals::default(),
             stops: Vec::new(),
-            core_hooks: false,
+            hooks: Hooks::None,
         }
     }
 
     /// The same world stepped with `CoreContactHooks`, every collider's
     /// `ActiveHooks::MODIFY_SOLVER_CONTACTS` on.
-    pub fn with_core_hooks(mut self) -> Self {
-        for (_, co) in self.world.colliders.iter_mut() {
-            co.set_active_hooks(co.active_hooks() | ActiveHooks::MODIFY_SOLVER_CONTACTS);
+    pub fn with_core_hooks(self) -> Self {
+        self.with_hooks(Hooks::Core)
+    }
+
+    /// The same world stepped with `hooks`, every collider's `ActiveHooks::MODIFY_SOLVER_CONTACTS`
+    /// on unless `Hooks::None`.
+    pub fn with_hooks(mut self, hooks: Hooks) -> Self {
+        if hooks != Hooks::None {
+            for (_, co) in self.world.colliders.iter_mut() {
+                co.set_active_hooks(co.active_hooks() | ActiveHooks::MODIFY_SOLVER_CONTACTS);
+            }
         }
-        self.core_hooks = true;
+        self.hooks = hooks;
         self
     }
 
@@ -235,7 +266,11 @@ impl Run {
             p.before_step(&self.world.bodies);
         }
         let t1 = Instant::now();
-        let hooks: &dyn PhysicsHooks = if self.core_hooks { &CoreContactHooks } else { &() };
+        let hooks: &dyn PhysicsHooks = match self.hooks {
+            Hooks::None => &(),
+            Hooks::Core => &CoreContactHooks,
+            Hooks::OneBounce => &OneBounceHooks,
+        };
         self.world.step_with(Vector::ZERO, hooks, &());
         let t2 = Instant::now();
         if let Some(p) = &mut self.pass {

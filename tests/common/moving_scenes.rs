@@ -6,7 +6,7 @@
 //! and `crates/parallel-tests` run them.
 #![allow(dead_code)]
 
-use super::moving_pairs::{Family, Judge, Launch, Run, Totals, Verdicts};
+use super::moving_pairs::{Family, Hooks, Judge, Launch, Run, Totals, Verdicts};
 use super::rng::Rng;
 use super::world::state_hash;
 use rapier2d_f64::prelude::*;
@@ -40,18 +40,15 @@ pub fn run_shot(launches: &[Launch], steps: usize, friction: f64, options: Optio
     run_shot_with(launches, steps, friction, options, false)
 }
 
-/// [`run_shot`], stepped with `CoreContactHooks` when `core_hooks`.
+/// [`run_shot`], stepped with `hooks` (`true`: `CoreContactHooks`).
 pub fn run_shot_with(
     launches: &[Launch],
     steps: usize,
     friction: f64,
     options: Option<MovingPairsOptions>,
-    core_hooks: bool,
+    hooks: impl Into<Hooks>,
 ) -> ShotResult {
-    let mut run = Run::new(launches, friction, options);
-    if core_hooks {
-        run = run.with_core_hooks();
-    }
+    let mut run = Run::new(launches, friction, options).with_hooks(hooks.into());
     let (e0, p0) = (run.energy(), run.momentum());
     let mut judge = Judge::new(&run);
     let mut finite = true;
@@ -369,10 +366,10 @@ pub struct BoxResult {
 }
 
 /// Runs the box for `steps` steps (frictionless, restitution 1, walls 1 m thick), with the
-/// pass of `options` or rapier alone, with `CoreContactHooks` (`core_hooks`: as docs/rapier.md
+/// pass of `options` or rapier alone, with `hooks` (`true`: `CoreContactHooks`, as docs/rapier.md
 /// advises for bouncing bodies) or without; a panic is caught and reported.
-pub fn run_box(steps: usize, options: Option<MovingPairsOptions>, core_hooks: bool) -> BoxResult {
-    run_box_with(steps, options, core_hooks, &|_| {})
+pub fn run_box(steps: usize, options: Option<MovingPairsOptions>, hooks: impl Into<Hooks>) -> BoxResult {
+    run_box_with(steps, options, hooks, &|_| {})
 }
 
 /// [`run_box`] in a world that `setup` prepares first (`crates/parallel-tests`: rapier's
@@ -380,7 +377,7 @@ pub fn run_box(steps: usize, options: Option<MovingPairsOptions>, core_hooks: bo
 pub fn run_box_with(
     steps: usize,
     options: Option<MovingPairsOptions>,
-    core_hooks: bool,
+    hooks: impl Into<Hooks>,
     setup: &dyn Fn(&mut super::world::World),
 ) -> BoxResult {
     let mut run = Run::new(&box_launches(), 0.0, options);
@@ -394,9 +391,7 @@ pub fn run_box_with(
     ] {
         run.wall(at, half, 0.0);
     }
-    if core_hooks {
-        run = run.with_core_hooks();
-    }
+    run = run.with_hooks(hooks.into());
     let e0 = run.energy();
     let mut judge = Judge::new(&run);
     let mut out = vec![false; run.bodies.len()];
@@ -495,8 +490,9 @@ pub fn pile_cost(steps: usize) -> PileCost {
 /// 2 m thick wall (restitution 1, friction 0.5, 20 steps), rapier clamping it at its impact and
 /// its solver resolving the contact at the next step — as the pass leaves a pair. Returns how
 /// many shots ended with more kinetic energy than they started with, of how many, and the
-/// largest ratio after over before.
-pub fn wall_bounce_energy() -> (usize, usize, f64) {
+/// largest ratio after over before. `hooks`: the hooks rapier steps with (`Hooks::None`: rapier's
+/// own restitution).
+pub fn wall_bounce_energy(hooks: Hooks) -> (usize, usize, f64) {
     let (mut gained, mut total, mut worst) = (0, 0, 0.0f64);
     for family in Family::ALL {
         for &speed in &HEAD_ON_SPEEDS {
@@ -512,6 +508,7 @@ pub fn wall_bounce_energy() -> (usize, usize, f64) {
                 };
                 let mut run = Run::new(&[launch], 0.5, None);
                 run.wall(Vector::new(3.0, 0.0), Vector::new(1.0, 20.0), 0.5);
+                let mut run = run.with_hooks(hooks);
                 let e0 = run.energy();
                 for _ in 0..HEAD_ON_STEPS {
                     run.step();

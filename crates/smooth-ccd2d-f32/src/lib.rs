@@ -107,7 +107,7 @@ mod widen;
 
 pub use cast::shape_time_of_impact;
 #[cfg(feature = "rapier")]
-pub use core_hooks::CoreContactHooks;
+pub use core_hooks::{CoreContactHooks, OneBounceHooks};
 pub use dispatcher::SmoothDispatcher;
 #[cfg(feature = "rapier")]
 pub use moving_pairs::MovingPairs;
