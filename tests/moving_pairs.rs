@@ -18,10 +18,8 @@ use common::moving_scenes::{
 /// on rapier's parallel pipeline (1 and 2 workers). Re-recorded only with the reason in the
 /// CHANGELOG (0xB7D8_7452_1F0F_256E before the rapier casts' face-following axis and
 /// sphere bound of issue 29 item 3 changed cast answers within their tolerance; 0x2AE1_1BF4_F65A_DC63 before the box ran with
-/// `CoreContactHooks`; 0x0959_51B3_1525_47E8 before the core-contact manifold left out the core
-/// contacts its exact points imply, issue 29 item 3's step cost: a disc's, a face's across a
-/// body's centre).
-const MOVING_BOX_STATE: u64 = 0x997D_D6DD_5111_B502;
+/// `CoreContactHooks`).
+const MOVING_BOX_STATE: u64 = 0x0959_51B3_1525_47E8;
 /// Steps of the determinism runs.
 const DETERMINISM_STEPS: usize = 150;
 

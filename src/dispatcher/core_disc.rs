@@ -131,18 +131,15 @@ pub fn is_core_feature(packed: u32) -> bool {
 
 /// Fills `manifold` with both bodies' core contacts ([`core_contacts`]) of a pair whose exact
 /// contact is `c`, in a manifold of their own beside the exact points' (the normal of `c`), when
-/// the pair has a contact point (`exact`, the exact manifold's points): speculative points that
-/// rapier's solver keeps only when the bodies' velocities would close them within the step. A
-/// core contact the exact points already imply ([`CoreContact::implied_by`], with the exact
-/// points closer than `prediction`) is left out: a disc's, or a face's lying across a body's
-/// centre line. Their ids are kept from the previous points. False, with the manifold left as it
-/// was, when the normal is not finite in body 2's frame.
+/// `with` (the pair has a contact point): speculative points that rapier's solver keeps only
+/// when the bodies' velocities would close them within the step. Their ids are kept from the
+/// previous points. False, with the manifold left as it was, when the normal is not finite in
+/// body 2's frame.
 pub(crate) fn core_manifold<M, C: Default + Copy>(
     pos12: &Pose,
     c: &Contact,
     cores: [Option<CoreContact>; 2],
-    exact: &[TrackedContact<C>],
-    prediction: f64,
+    with: bool,
     manifold: &mut ContactManifold<M, C>,
 ) -> bool {
     let n2 = pos12.inverse_transform_vector(-c.normal);
@@ -153,9 +150,9 @@ pub(crate) fn core_manifold<M, C: Default + Copy>(
     manifold.clear();
     manifold.local_n1 = c.normal;
     manifold.local_n2 = n2;
-    if !exact.is_empty() {
+    if with {
         for (k, code) in cores.iter().zip([CORE_FEATURE, CORE_FEATURE - 1]) {
-            if let Some(k) = k.filter(|k| !k.implied_by(c.normal, exact, prediction)) {
+            if let Some(k) = k {
                 let id = vertex_id(code);
                 let p2 = pos12.inverse_transform_point(k.point2);
                 manifold.points.push(TrackedContact::new(k.point1, p2, id, id, k.dist));
@@ -180,50 +177,7 @@ pub(crate) struct CoreContact {
     pub body: usize,
 }
 
-/// How far (a fraction of the core's radius) a core contact may lie along the tangent outside
-/// the exact points and still count as implied by them ([`CoreContact::implied_by`]): the
-/// rounding of a disc's contact point, which lies on the disc's centre line.
-const IMPLIED_TANGENT_SLACK: f64 = 1e-9;
-
 impl CoreContact {
-    /// Whether rapier's solver rows of the exact contact points `exact` (body 1's frame, normal
-    /// `n`) already imply this core contact's row, so that it can be left out.
-    ///
-    /// The relative normal velocity of two rigid bodies at a point x, g(x) = (v₂ + ω₂ × (x − c₂)
-    /// − v₁ − ω₁ × (x − c₁))·n, is affine in x, and a step along n does not change it (ω × n ⊥ n):
-    /// g is an affine function of the tangential coordinate u = x·t alone (t ⊥ n), whatever the
-    /// bodies' velocities and spins. rapier's row of a point at distance d asks g ≥ −b(d), its
-    /// bound b(d) = max(d, 0)/dt + clamp(d·erp/dt, −max_corrective_velocity, 0) (rapier 0.36,
-    /// `ContactWithCoulombFrictionBuilder::update`) nondecreasing in d. If exact points at
-    /// u_a ≤ u_b, distances d_a, d_b, both have rows, then at any u = λu_a + (1 − λ)u_b of the
-    /// span g(u) = λg(u_a) + (1 − λ)g(u_b) ≥ −b(max(d_a, d_b)) ≥ −b(gap) when the core's gap is
-    /// at least both distances: its row holds wherever theirs do, and adds nothing but solver
-    /// work (a second manifold is a second constraint for rapier, in another SIMD batch since it
-    /// shares the bodies). The core rows exist for the other case: a contact point off the
-    /// body's centre line, which a spin carries away while the centre drives in.
-    ///
-    /// Only exact points closer than `prediction` count: rapier gives them rows whatever the
-    /// velocities (`dist < prediction`), where a farther point gets one only when it is closing
-    /// within the step. A core lying within [`IMPLIED_TANGENT_SLACK`] of its radius r outside
-    /// the span (a disc's, its contact point on its centre line to rounding) counts as inside:
-    /// its row then asks at most |ω₂ − ω₁|·10⁻⁹·r more than the span's, nothing at any spin a
-    /// step can hold. The bounds of rapier's restitution pass (e × the row's approach speed at
-    /// the step's start) are affine in u as well: where the rows bounce alike, the same
-    /// argument holds; a core row bouncing where the exact rows rest (a new row beside old
-    /// ones) is the energy the `CoreContactHooks` take out, not a bound the body needs.
-    pub(crate) fn implied_by<C>(&self, n: Vector, exact: &[TrackedContact<C>], prediction: f64) -> bool {
-        let t = Vector::new(-n.y, n.x);
-        let (mut lo, mut hi, mut deepest) = (f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY);
-        for p in exact.iter().filter(|p| p.dist < prediction) {
-            let u = p.local_p1.dot(t);
-            (lo, hi, deepest) = (lo.min(u), hi.max(u), deepest.max(p.dist));
-        }
-        // The core's point and the point opposite it on the other body share their tangential
-        // coordinate; `point1` is in body 1's frame like the exact points' `local_p1`.
-        let (u, slack) = (self.point1.dot(t), IMPLIED_TANGENT_SLACK * self.radius);
-        lo - slack <= u && u <= hi + slack && self.dist >= deepest
-    }
-
     /// Whether the two points `p` (of the core's body, body 1's frame) lie on either side of the
     /// core's centre along the tangent of the normal `n`: the centre's motion then shows in
     /// their own, and a two-point manifold keeps them both.
@@ -291,64 +245,6 @@ mod tests {
             })
             .fold(f64::INFINITY, f64::min);
         Core { centre, radius }
-    }
-
-    type Manifolds = Vec<ContactManifold<(), ()>>;
-
-    /// The dispatcher's manifolds of a convex pair: the exact points, then the core contacts.
-    fn manifolds(g1: &dyn Shape, g2: &dyn Shape, pos12: &Pose, prediction: f64) -> Manifolds {
-        use parry2d_f64::query::PersistentQueryDispatcher;
-        let (mut m, mut ws) = (Vec::new(), None);
-        crate::SmoothDispatcher::default()
-            .contact_manifolds(pos12, g1, g2, prediction, &mut m, &mut ws)
-            .unwrap();
-        assert_eq!(m.len(), 2);
-        m
-    }
-
-    /// The codes of the core contacts of a manifold list (`CORE_FEATURE` body 1's, the code
-    /// below it body 2's).
-    fn core_codes(m: &Manifolds) -> Vec<u32> {
-        m[1].points.iter().map(|p| p.fid2.0).collect()
-    }
-
-    #[test]
-    fn core_contacts_the_exact_points_imply_are_left_out() {
-        let ground = Cuboid::new(Vector::new(2.0, 0.5));
-        let (one, two) = (vertex_id(CORE_FEATURE).0, vertex_id(CORE_FEATURE - 1).0);
-        // A sharp square turned face down, resting 0.001 deep on the box: its two exact points
-        // span its centre's line, and the box's centre's when it sits over it.
-        let square = RoundedPolygon::regular(4, 0.35, 0.0);
-        let half = 0.35 * core::f64::consts::FRAC_1_SQRT_2;
-        let on = |x: f64, lift: f64| Pose::new(Vector::new(x, 0.5 + half + lift), core::f64::consts::FRAC_PI_4);
-        let m = manifolds(&ground, &square, &on(0.0, -1e-3), 0.0);
-        assert_eq!(m[0].points.len(), 2);
-        assert!(m[1].points.is_empty(), "{:?}", m[1].points);
-        // Off the box's centre: the box's core (at x = 0) lies outside the span [0.75, 1.25].
-        let m = manifolds(&ground, &square, &on(1.0, -1e-3), 0.0);
-        assert_eq!(core_codes(&m), [one]);
-        // Only points closer than the prediction count (rapier gives a farther point a row only
-        // when it closes within the step): 0.05 above the box, a prediction of exactly the gap
-        // keeps both cores, a larger one leaves them out.
-        let gap = manifolds(&ground, &square, &on(0.0, 0.05), 0.1)[0].points[0].dist;
-        assert!((gap - 0.05).abs() < 1e-12, "{gap}");
-        assert_eq!(
-            core_codes(&manifolds(&ground, &square, &on(0.0, 0.05), gap)),
-            [one, two]
-        );
-        assert!(manifolds(&ground, &square, &on(0.0, 0.05), 0.06)[1].points.is_empty());
-        // A disc's contact point lies on its centre's line: its core is implied, the box's (off
-        // that line) is not.
-        let disc = Ellipse::new(0.2, 0.2);
-        let m = manifolds(&ground, &disc, &Pose::translation(0.5, 0.69), 0.0);
-        assert_eq!(core_codes(&m), [one]);
-        // A tilted ellipse touches off both centres' lines: both cores, each gap at least the
-        // exact point's distance.
-        let e = Ellipse::new(0.5, 0.2);
-        let m = manifolds(&ground, &e, &Pose::new(Vector::new(0.3, 0.75), 0.5), 0.1);
-        assert_eq!(m[0].points.len(), 1);
-        assert_eq!(core_codes(&m), [one, two]);
-        assert!(m[1].points.iter().all(|k| k.dist >= m[0].points[0].dist));
     }
 
     #[test]

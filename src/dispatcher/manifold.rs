@@ -382,7 +382,13 @@ impl SmoothDispatcher {
             // Both bodies' cores, in a manifold of their own.
             Some(m) => {
                 manifold_from_contact(pos12, &c, None, prediction, manifold)
-                    && core_manifold(pos12, &c, core_contacts(k, pos12, &c), &manifold.points, prediction, m)
+                    && core_manifold(
+                        pos12,
+                        &c,
+                        core_contacts(k, pos12, &c),
+                        !manifold.points.is_empty(),
+                        m,
+                    )
             }
             // One core, with the exact points (a part of a composite shape).
             None => manifold_from_contact(pos12, &c, core_contact(s1, s2, k, pos12, &c), prediction, manifold),
@@ -586,7 +592,7 @@ mod tests {
     }
 
     #[test]
-    fn ellipse_on_box_is_one_exact_point_and_the_box_core_in_a_manifold_of_its_own() {
+    fn ellipse_on_box_is_one_exact_point_and_both_cores_in_a_manifold_of_their_own() {
         let e = Ellipse::new(0.5, 0.2);
         let b = Cuboid::new(Vector::new(2.0, 0.5));
         // Ellipse 0.19 above the box top (penetration 0.01).
@@ -602,29 +608,33 @@ mod tests {
         assert!(p.fid1.is_face());
         assert_eq!(p.fid2, PackedFeatureId::vertex(0));
         // The core contacts, along the same normal: the box's core (half its inradius 0.5 about
-        // its centre, the point (0, 0.25)) 0.24 below the ellipse's lowest line (y = 0.49). The
-        // ellipse's (half its inradius 0.2, the point 0.1 below its centre, 0.09 above the box's
-        // face) lies on the line of the exact point, its row implied by the exact point's: left
-        // out (`CoreContact::implied_by`).
+        // its centre, the point (0, 0.25)) 0.24 below the ellipse's lowest line (y = 0.49), and
+        // the ellipse's (half its inradius 0.2, the point 0.1 below its centre) 0.09 above the
+        // box's face.
         let cores = &m[1].points;
-        assert_eq!(cores.len(), 1);
+        assert_eq!(cores.len(), 2);
         assert!((m[1].local_n1 - Vector::Y).length() < 1e-12);
-        let k1 = &cores[0];
+        let (k1, k2) = (&cores[0], &cores[1]);
         assert!((k1.dist - 0.24).abs() < 1e-12, "{}", k1.dist);
         assert!((k1.local_p1 - Vector::new(0.0, 0.25)).length() < 1e-12);
         assert_eq!((k1.fid1, k1.fid2), (vertex_id(CORE_FEATURE), vertex_id(CORE_FEATURE)));
-        // Swapped order gives the mirrored manifolds (the box is body 2 now: its core's code).
+        assert!((k2.dist - 0.09).abs() < 1e-12, "{}", k2.dist);
+        assert!((k2.local_p2 - Vector::new(0.0, -0.1)).length() < 1e-12);
+        assert!((k2.local_p1 - Vector::new(0.1, 0.5)).length() < 1e-12);
+        assert_eq!(k2.fid2, vertex_id(CORE_FEATURE - 1));
+        // Swapped order gives the mirrored manifolds.
         let m2 = manifolds(&e, &b, &pos12.inverse(), 0.0);
         let q = &m2[0].points[0];
         assert!((q.dist - p.dist).abs() < 1e-12);
         assert!((q.local_p1 - p.local_p2).length() < 1e-9);
         assert_eq!(q.fid2, p.fid1);
         let swapped: Vec<f64> = m2[1].points.iter().map(|k| k.dist).collect();
-        assert!(swapped.len() == 1 && (swapped[0] - 0.24).abs() < 1e-12, "{swapped:?}");
-        assert_eq!(m2[1].points[0].fid2, vertex_id(CORE_FEATURE - 1));
+        assert!(
+            (swapped[0] - 0.09).abs() < 1e-12 && (swapped[1] - 0.24).abs() < 1e-12,
+            "{swapped:?}"
+        );
         // Apart beyond the prediction: no point, no core contact (two manifolds still, for a
-        // stable count); within it, the exact point, and no core contact when both cores lie on
-        // the exact point's line (the ellipse centred over the box).
+        // stable count); within it, the exact point and the core contacts, whatever their gaps.
         let far = Pose::translation(0.0, 0.75);
         let apart = manifolds(&b, &e, &far, 0.01);
         assert_eq!(apart.len(), 2);
@@ -632,8 +642,7 @@ mod tests {
         let near = manifolds(&b, &e, &far, 0.1);
         assert_eq!(near[0].points.len(), 1);
         assert!((near[0].points[0].dist - 0.05).abs() < 1e-12);
-        assert_eq!(near.len(), 2);
-        assert!(near[1].points.is_empty());
+        assert_eq!(near[1].points.len(), 2);
     }
 
     #[test]

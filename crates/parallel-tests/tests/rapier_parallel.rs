@@ -130,7 +130,7 @@ fn rapier_parallel_pipeline_with_the_smooth_dispatcher() {
 fn the_moving_pairs_box_gives_the_same_bits_on_the_parallel_pipeline() {
     use common::moving_scenes::{pass_options, run_box_with};
     /// `MOVING_BOX_STATE` of `tests/moving_pairs.rs`.
-    const MOVING_BOX_STATE: u64 = 0x997D_D6DD_5111_B502;
+    const MOVING_BOX_STATE: u64 = 0x0959_51B3_1525_47E8;
     for workers in [1, 2] {
         let pool = |w: &mut World| w.pipeline.configure_thread_pool(workers).expect("thread pool");
         let hash = run_box_with(150, Some(pass_options()), true, &pool).hash;
