@@ -382,13 +382,7 @@ impl SmoothDispatcher {
             // Both bodies' cores, in a manifold of their own.
             Some(m) => {
                 manifold_from_contact(pos12, &c, None, prediction, manifold)
-                    && core_manifold(
-                        pos12,
-                        &c,
-                        core_contacts(k, pos12, &c),
-                        !manifold.points.is_empty(),
-                        m,
-                    )
+                    && core_manifold(pos12, &c, core_contacts(k, pos12, &c), !manifold.points.is_empty(), m)
             }
             // One core, with the exact points (a part of a composite shape).
             None => manifold_from_contact(pos12, &c, core_contact(s1, s2, k, pos12, &c), prediction, manifold),
