@@ -18,8 +18,10 @@
 use crate::parry_shape::vertex_id;
 use crate::parry_shape::{capsule_ellipse_core, polygon_core, Core};
 use crate::query::contact::{Contact, SupportShape};
+use crate::RoundedPolygon;
 use parry2d_f64::math::{Pose, Vector};
 use parry2d_f64::query::{ContactManifold, TrackedContact};
+use parry2d_f64::shape::Shape;
 
 /// The core contact's disc, as a fraction of the core's radius (the inradius about the
 /// centroid). Larger than rapier's CCD core ([`super::rapier_rule::CastPolicy::CORE`]): the
@@ -45,16 +47,22 @@ pub(crate) const CORE_CONTACT_FRACTION: f64 = 0.5;
 /// that holds one core contact (the part of a composite shape: a compact body against a piece
 /// of level geometry; a segment has no core at all); `contact_manifolds` of a convex pair gives
 /// both bodies' in a manifold of their own ([`core_manifold`]). `None` when neither body has a
-/// core.
-pub(crate) fn core_contact(s1: SupportShape, s2: SupportShape, pos12: &Pose, c: &Contact) -> Option<CoreContact> {
-    let [k1, k2] = core_contacts(s1, s2, pos12, c);
-    match (k1, k2) {
-        (Some(a), Some(b)) => {
-            let reach1 = reach(s1, core_of(s1).map_or(Vector::ZERO, |k| k.centre));
-            let reach2 = reach(s2, core_of(s2).map_or(Vector::ZERO, |k| k.centre));
+/// core. `cores` are the two shapes' cores ([`core_of`]), which the caller has already computed
+/// (a polygon's is its centroid and inradius: a sum over its edges, worth computing once a call).
+pub(crate) fn core_contact(
+    s1: SupportShape,
+    s2: SupportShape,
+    cores: [Option<Core>; 2],
+    pos12: &Pose,
+    c: &Contact,
+) -> Option<CoreContact> {
+    match core_contacts(cores, pos12, c) {
+        [Some(a), Some(b)] => {
+            let reach1 = reach(s1, cores[0].map_or(Vector::ZERO, |k| k.centre));
+            let reach2 = reach(s2, cores[1].map_or(Vector::ZERO, |k| k.centre));
             Some(if reach2 < reach1 { b } else { a })
         }
-        (a, b) => a.or(b),
+        [a, b] => a.or(b),
     }
 }
 
@@ -72,11 +80,12 @@ fn reach(s: SupportShape, centre: Vector) -> f64 {
 }
 
 /// The core contacts of both bodies of a pair whose exact contact is `c` ([`core_contact`]), in
-/// body 1's frame; `None` for a body without a core (a segment) or a value that is not finite.
-pub(crate) fn core_contacts(s1: SupportShape, s2: SupportShape, pos12: &Pose, c: &Contact) -> [Option<CoreContact>; 2] {
+/// body 1's frame, from the bodies' cores `cores` ([`core_of`] of each shape, in its own frame);
+/// `None` for a body without a core (a segment) or a value that is not finite.
+pub(crate) fn core_contacts(cores: [Option<Core>; 2], pos12: &Pose, c: &Contact) -> [Option<CoreContact>; 2] {
     let n = c.normal;
     let w = &c.points[0];
-    let (k1, k2) = (core_of(s1), core_of(s2));
+    let [k1, k2] = cores;
     // A body's centroid (a segment's midpoint), or its witness when it has none.
     let c1 = k1.map_or(w.point1, |k| k.centre);
     let c2 = k2.map_or(w.point2, |k| pos12 * k.centre);
@@ -178,6 +187,21 @@ impl CoreContact {
     }
 }
 
+/// [`core_of`] the support shape `s` of the shape `g`: a [`RoundedPolygon`]'s core as it was
+/// stored when the polygon was built ([`RoundedPolygon::core`]: `polygon_core` of the same
+/// vertices, normals and radius that `s` holds, so the same value to the bit), else computed.
+pub(crate) fn core_of_shape(g: &dyn Shape, s: SupportShape) -> Option<Core> {
+    match g.as_shape::<RoundedPolygon>() {
+        Some(p) => p.core().and_then(usable),
+        None => core_of(s),
+    }
+}
+
+/// A core with a finite centre and a finite radius ≥ 0, else `None`.
+fn usable(core: Core) -> Option<Core> {
+    (core.centre.is_finite() && core.radius.is_finite() && core.radius >= 0.0).then_some(core)
+}
+
 /// The core of a shape the contact query reads; `None` for a degenerate polygon (no area).
 pub(crate) fn core_of(s: SupportShape) -> Option<Core> {
     let core = match s {
@@ -196,7 +220,7 @@ pub(crate) fn core_of(s: SupportShape) -> Option<Core> {
         } => polygon_core(vertices, normals, radius)?,
         SupportShape::CapsuleEllipse(r1, r2, r3) => capsule_ellipse_core(r1, r2, r3),
     };
-    (core.centre.is_finite() && core.radius.is_finite() && core.radius >= 0.0).then_some(core)
+    usable(core)
 }
 
 #[cfg(test)]

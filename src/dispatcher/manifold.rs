@@ -52,7 +52,7 @@
 //! over small facets).
 
 use super::composite::{composite_manifolds, is_composite_like};
-use super::core_disc::{core_contact, core_contacts, core_manifold, core_of, CoreContact, CORE_FEATURE};
+use super::core_disc::{core_contact, core_contacts, core_manifold, core_of_shape, CoreContact, CORE_FEATURE};
 use super::input_guard;
 use super::parry_fallback::{pair_size, parry_within, pushed_together, TOUCH_PUSH};
 use super::parry_pairs;
@@ -371,25 +371,21 @@ impl SmoothDispatcher {
         let Some(c) = exact_contact_of(s1, s2, pos12, hint) else {
             return false;
         };
+        // Each shape's core, once: the centres below and the core contacts read them.
+        let k = [core_of_shape(g1, s1), core_of_shape(g2, s2)];
         // A wall of no thickness: the contact from the side the body's centre is on.
-        let c = match (core_of(s1), core_of(s2)) {
-            (Some(k1), Some(k2)) => from_centre_side(c, pos12, g1, g2, k1.centre, k2.centre),
+        let c = match k {
+            [Some(k1), Some(k2)] => from_centre_side(c, pos12, g1, g2, k1.centre, k2.centre),
             _ => c,
         };
         match cores {
             // Both bodies' cores, in a manifold of their own.
             Some(m) => {
                 manifold_from_contact(pos12, &c, None, prediction, manifold)
-                    && core_manifold(
-                        pos12,
-                        &c,
-                        core_contacts(s1, s2, pos12, &c),
-                        !manifold.points.is_empty(),
-                        m,
-                    )
+                    && core_manifold(pos12, &c, core_contacts(k, pos12, &c), !manifold.points.is_empty(), m)
             }
             // One core, with the exact points (a part of a composite shape).
-            None => manifold_from_contact(pos12, &c, core_contact(s1, s2, pos12, &c), prediction, manifold),
+            None => manifold_from_contact(pos12, &c, core_contact(s1, s2, k, pos12, &c), prediction, manifold),
         }
     }
 }

@@ -1,7 +1,6 @@
 //! parry's traits for [`RoundedPolygon`]: exact projection (the core polygon's signed distance
 //! minus the radius), parry's `RoundConvexPolygon` features, exact mass.
 
-use super::core::polygon_core;
 use super::mass::{mass_from_moments, rounded_polygon_moments};
 use super::ray::curve_ray;
 use super::{face_id, vertex_id};
@@ -218,7 +217,8 @@ impl Shape for RoundedPolygon {
     fn ccd_thickness(&self) -> Real {
         // The inradius about the centroid (module docs of `core`): a thin polygon turned off its
         // axes is thinner than its box says.
-        polygon_core(self.vertices(), self.edge_normals(), self.corner_radius()).map_or(0.0, |c| c.radius)
+        // Stored when the polygon was built (`RoundedPolygon::core`).
+        self.core().map_or(0.0, |c| c.radius)
     }
 
     fn ccd_angular_thickness(&self) -> Real {

@@ -19,6 +19,7 @@ use crate::curve::polygon_pieces::{layout, LayoutScalars, PolygonPieces};
 use crate::curve::{ConvexCurve, CurvePoint};
 use crate::error::{non_negative, positive, ShapeError, MAX_VERTICES};
 use crate::numerics::math::{cross, unit, Vector};
+use crate::parry_shape::{polygon_core, Core};
 use core::f64::consts::PI;
 
 /// Consecutive vertices closer than this fraction of the polygon's size are the same vertex
@@ -43,6 +44,11 @@ pub struct RoundedPolygon {
     piece_starts: Vec<f64>,
     /// k, r + c and the bounding radius of the layout.
     scalars: LayoutScalars,
+    /// The core (centroid and inradius about it, `parry_shape::polygon_core` of the fields
+    /// above), computed once here: the dispatcher reads it at every contact manifold and every
+    /// rapier cast (`ccd_thickness`), where computing it — a sum over the edges, an `atan2` per
+    /// rounded corner — cost more than the rest of a manifold's bookkeeping.
+    core: Option<Core>,
 }
 
 #[cfg(feature = "serde")]
@@ -181,6 +187,7 @@ impl RoundedPolygon {
             &mut edge_lengths,
             &mut piece_starts,
         );
+        let core = polygon_core(&vertices, &edge_normals, radius);
         Self {
             vertices,
             radius,
@@ -188,7 +195,15 @@ impl RoundedPolygon {
             edge_lengths,
             piece_starts,
             scalars,
+            core,
         }
+    }
+
+    /// The polygon's core: `parry_shape::polygon_core` of its vertices, edge normals and corner
+    /// radius, stored when it was built.
+    #[inline]
+    pub(crate) fn core(&self) -> Option<Core> {
+        self.core
     }
 
     /// The shared piece layout over this polygon's data.
