@@ -295,7 +295,11 @@ fn disc_hits_a_ball_at_the_quadratics_time() {
         );
         let centre = m1.start.translation + m1.linvel * t;
         let towards = (centre - pose2.translation).normalize();
-        assert!((pose2.rotation * hit.normal2 - towards).length() <= 1e-12, "{hit:?} {towards:?} {:?}", pose2.rotation * hit.normal2);
+        assert!(
+            (pose2.rotation * hit.normal2 - towards).length() <= 1e-12,
+            "{hit:?} {towards:?} {:?}",
+            pose2.rotation * hit.normal2
+        );
     }
 }
 
