@@ -361,7 +361,7 @@ fn core_level(start: Option<Contact>, radius: Real, tol: Real) -> Real {
 
 /// How deep, as a fraction of its radius, the core of a body that starts touching a target may
 /// go into it ([`core_level`]).
-const CORE_DEPTH_LIMIT: Real = 0.5;
+pub(crate) const CORE_DEPTH_LIMIT: Real = 0.5;
 
 /// The hit of a start contact at time `t`, with the pair's exact contact there for its
 /// witnesses and distance (rapier reads only the time; the witnesses are the pair's own, in

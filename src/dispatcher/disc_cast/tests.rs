@@ -93,8 +93,11 @@ fn case(rng: &mut Rng, target: &dyn Shape, contact: bool) -> Case {
             let k = exact_contact(&pos12, &disc, target, None).unwrap();
             centre += k.normal * k.dist;
         }
+        // Down past the core (0.75 of the radius) now and then: the core's own start contact.
         let depth = if rng.chance(0.3) {
             0.0
+        } else if rng.chance(0.2) {
+            rng.uniform(0.6 * rho, 1.0 * rho)
         } else {
             rng.uniform(0.0, 0.1 * rho)
         };
