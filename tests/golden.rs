@@ -230,11 +230,24 @@ const FUZZ_CASES: u64 = 40_000;
 /// `parry-pair` 9, `random` 6, `thin-ellipse` 4, `extreme-scale` 3, `wild` 2. Before:
 /// `extreme-scale` 0xBD48FD64002C8330, `parry-pair` 0x96B5743E1EBD7D14, `random`
 /// 0x73EC9D3368692363, `thin-ellipse` 0xB41A74E4AB567997, `wild` 0xF172F502B216952C.
+///
+/// Re-recorded when rapier's casts of a disc turning about its centre against a polygon or a
+/// disc at rest took the closed form (`dispatcher::disc_cast`: the first entry of the centre's
+/// straight path into the target grown by the disc's radius) in place of the advancement. Only
+/// `grazing` changed: 1,435 of its 8,888 dispatcher casts (all `Ellipse` discs against a `Ball`,
+/// without spin), at grazes whose least distance lies within the distance tolerance τ of the
+/// target, where the time is ill-conditioned (√τ): the advancement takes any time in the band
+/// [δ, δ + τ], the closed form the exact entry at δ or, for a path that only enters the band,
+/// at δ + τ; times apart by 5e-8 of the window at the median, 6.1e-5 at most. 18 casts the
+/// advancement answered with no hit now hit at the band's entry (their least distance is in
+/// (δ, δ + τ], where the documented acceptance allows either); without that entry 506 hits the
+/// advancement accepts in the band would have become misses. Before: `grazing`
+/// 0x99FFB0EC2151A936.
 const FUZZ_DIGESTS: [(&str, u64); 9] = [
     ("coincident", 0xD05246972C0DC0FE),
     ("concentric", 0xA310B03C479F34FB),
     ("extreme-scale", 0x838EB313558CC31A),
-    ("grazing", 0x99FFB0EC2151A936),
+    ("grazing", 0x09E5F3BA3F2A2824),
     ("parry-pair", 0x4E72607927A4C139),
     ("random", 0x0E29416E6D3DD4F2),
     ("thin-ellipse", 0x835E3ADEB6958CFB),
@@ -260,8 +273,10 @@ const FUZZ_DIGESTS: [(&str, u64); 9] = [
 /// the nlerp rotation algebraically and the turn's bounds over a horizon past 2π/3, as above;
 /// 0x4B9D_EDE6_F90A_9ABE before a turning disc's piece was bounded by its centre's offset alone;
 /// 0x2C5F_B8BA_04DA_456E before a core that starts touching its target could go a quarter of its
-/// radius deeper a step, issue 29 item 1).
-const RAPIER_STATE: u64 = 0x6753_8F4E_7514_C740;
+/// radius deeper a step, issue 29 item 1; 0x6753_8F4E_7514_C740 before rapier's casts of a disc
+/// took the closed form of `dispatcher::disc_cast`: the same first touches to the advancement's
+/// tolerance, the pile's trajectory with their last bits).
+const RAPIER_STATE: u64 = 0xAE39_F45C_9128_87D0;
 
 /// FNV-1a of a sequence of words.
 fn fnv(words: impl IntoIterator<Item = u64>) -> u64 {

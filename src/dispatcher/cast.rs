@@ -2,9 +2,12 @@
 //! convert gets the crate's exact time of impact ([`route_cast`]) — the φ–t tracker when one side
 //! is strictly convex, the gap tracker otherwise, the half-space cast — with the
 //! [`crate::CastPolicy`] applied (rapier's clamp path and start-contact rule); composites are decomposed
-//! with this dispatcher inside, and the shapes it cannot convert go to parry.
+//! with this dispatcher inside, and the shapes it cannot convert go to parry. Under rapier's
+//! rules a disc turning about its centre against a polygon or a disc at rest is answered in
+//! closed form first (`disc_cast`: its centre's straight path against the grown target).
 
 use super::composite::composite_cast_nonlinear;
+use super::disc_cast::disc_cast;
 use super::input_guard;
 use super::parry_fallback::parry_nonlinear_without_stop;
 use super::parry_fallback::{parry_cast_nonlinear, size_of_radii};
@@ -218,8 +221,20 @@ impl SmoothDispatcher {
         }))
     }
 
-    /// The nonlinear cast of `c` as it is (module docs).
+    /// The nonlinear cast of `c` as it is (module docs): a moving disc in closed form
+    /// (`disc_cast`) under rapier's rules, the general path otherwise.
     fn nonlinear_cast_here(&self, c: &NonlinearCast) -> Result<Option<ShapeCastHit>, Unsupported> {
+        let (opts, rule) = self.cast_setup(c);
+        if rule.rapier {
+            if let Some(answer) = disc_cast(c, &opts, rule.start_contact) {
+                return answer;
+            }
+        }
+        self.general_cast(c, &opts, rule)
+    }
+
+    /// The options and rules of the cast `c` under the dispatcher's policy.
+    pub(crate) fn cast_setup(&self, c: &NonlinearCast) -> (ToiOptions, Rules) {
         let rapier = self.cast_policy.is_rapier();
         let mut opts = ToiOptions {
             stop_at_penetration: c.stop,
@@ -233,6 +248,18 @@ impl SmoothDispatcher {
             rapier: rapier && is_window(c.t0, c.t1),
             start_contact: rapier && !c.stop && is_window(c.t0, c.t1),
         };
+        (opts, rule)
+    }
+
+    /// The nonlinear cast of `c` by the general path (module docs), with `opts` and `rule` from
+    /// [`Self::cast_setup`].
+    pub(crate) fn general_cast(
+        &self,
+        c: &NonlinearCast,
+        opts: &ToiOptions,
+        rule: Rules,
+    ) -> Result<Option<ShapeCastHit>, Unsupported> {
+        let opts = *opts;
         if rule.rapier {
             if let Some(answer) = rapier_fast_path(c, &opts, rule) {
                 return answer;
@@ -485,9 +512,9 @@ fn advanced(
 /// policy is rapier's and the window is not empty) and the start-contact rule (also solid
 /// bodies, `stop_at_penetration = false`).
 #[derive(Copy, Clone, Debug)]
-struct Rules {
-    rapier: bool,
-    start_contact: bool,
+pub(crate) struct Rules {
+    pub rapier: bool,
+    pub start_contact: bool,
 }
 
 /// `opts` on parry's own motions (the level searches of the start-contact rule run on motions

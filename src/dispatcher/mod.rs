@@ -53,6 +53,7 @@ mod composite;
 mod core_disc;
 #[cfg(feature = "rapier")]
 mod core_hooks;
+mod disc_cast;
 mod impact_row;
 pub(crate) mod inline_polygon;
 pub(crate) mod input_guard;

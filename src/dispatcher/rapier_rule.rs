@@ -361,13 +361,13 @@ fn core_level(start: Option<Contact>, radius: Real, tol: Real) -> Real {
 
 /// How deep, as a fraction of its radius, the core of a body that starts touching a target may
 /// go into it ([`core_level`]).
-const CORE_DEPTH_LIMIT: Real = 0.5;
+pub(crate) const CORE_DEPTH_LIMIT: Real = 0.5;
 
 /// The hit of a start contact at time `t`, with the pair's exact contact there for its
 /// witnesses and distance (rapier reads only the time; the witnesses are the pair's own, in
 /// each shape's frame), or the start's distance `d0` and no witnesses when the contact query
 /// does not read the pair.
-fn hit_at(c: &NonlinearCast, t: Real, d0: Real) -> TimeOfImpact {
+pub(crate) fn hit_at(c: &NonlinearCast, t: Real, d0: Real) -> TimeOfImpact {
     let pos12 = super::cast::pos12_at(c.m1, c.m2, t);
     let k = exact_contact(&pos12, c.g1, c.g2, None);
     let (distance, point1, point2, normal1) = match &k {
