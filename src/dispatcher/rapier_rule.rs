@@ -229,9 +229,24 @@ pub(crate) fn out_of_reach(c: &NonlinearCast, d0: Real, target: Real) -> bool {
     both.is_finite() && d0 - target > both + margin
 }
 
-/// A motion without its spin.
-fn spinless(m: &NonlinearRigidMotion) -> NonlinearRigidMotion {
-    NonlinearRigidMotion { angvel: 0.0, ..*m }
+/// A motion without its spin from `t0` on: the body translates from its pose at `t0` (the
+/// rotation it has reached there kept), so that at `t0` it is where the whole motion puts it
+/// and the start contact (taken on the whole motion at `t0`) is the translating pair's. With
+/// the rotation at t = 0 instead, a window that does not start at 0 would translate a body
+/// turned by ω·t₀ from where it is: the rule's levels would be searched in the wrong frame.
+/// At t0 = 0 the motion is kept as it is (its pose at 0 is its start, to the bit).
+fn spinless_from(m: &NonlinearRigidMotion, t0: Real) -> NonlinearRigidMotion {
+    let start = if t0 == 0.0 || m.angvel == 0.0 {
+        m.start
+    } else {
+        let p = m.position_at_time(t0);
+        Pose::from_parts(p.translation - m.linvel * t0, p.rotation)
+    };
+    NonlinearRigidMotion {
+        start,
+        angvel: 0.0,
+        ..*m
+    }
 }
 
 /// The first time a level search of the translating pair `p` reports, with `general` for the
@@ -279,7 +294,7 @@ pub(crate) fn start_contact_answer(
     // The translation: the motions without their spins, down to min(−A, d₀ − A).
     let allowance = CastPolicy::ALLOWANCE * r.max(CastPolicy::START_CONTACT_GAP * size);
     let target = (-allowance).min(d0 - allowance);
-    let (m1, m2) = (spinless(c.m1), spinless(c.m2));
+    let (m1, m2) = (spinless_from(c.m1, c.t0), spinless_from(c.m2, c.t0));
     let t_trans = if c.spin_at_start {
         // The whole motions, rotation included, down to the same level.
         if out_of_reach(c, d0, target) {
