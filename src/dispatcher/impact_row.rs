@@ -81,6 +81,10 @@ impl ImpactSide {
     }
 }
 
+/// det K ≤ SAME_ROW · K₀₀ K₁₁ (the rows' Jacobians parallel to within about 10⁻⁶ rad, where
+/// rounding decides the 2×2 solve): the two rows are one, with equal weights.
+const SAME_ROW: f64 = 1e-12;
+
 /// The weights (w₀, w₁), w ≥ 0, w₀ + w₁ = 1, of the single row that replaces two approaching
 /// rows at world points `points` (normal `normal`, from body 1 towards body 2; module docs:
 /// their inelastic impulses, normalised). `None` when a row is not approaching (rapier then
@@ -90,7 +94,7 @@ impl ImpactSide {
 /// The 2×2 LCP u₀ + K λ ≥ 0, λ ≥ 0, λᵢ (u₀ + K λ)ᵢ = 0 has a unique solution (K is positive
 /// semi-definite; a P-matrix when the rows differ): both rows pushing, λ = −K⁻¹ u₀, when that is
 /// non-negative; otherwise the one row whose own impulse −u₀ᵢ / Kᵢᵢ leaves the other at
-/// u ≥ 0. Two rows with the same Jacobian (det K = 0 to rounding) are one row: equal weights.
+/// u ≥ 0. Two rows with the same Jacobian (det K ≤ `SAME_ROW`·K₀₀K₁₁) are one row: equal weights.
 #[doc(hidden)]
 pub fn impact_weights(normal: Vector, points: [Vector; 2], sides: [ImpactSide; 2]) -> Option<[f64; 2]> {
     let [s1, s2] = sides;
@@ -108,7 +112,7 @@ pub fn impact_weights(normal: Vector, points: [Vector; 2], sides: [ImpactSide; 2
         return None;
     }
     let det = k00 * k11 - k01 * k01;
-    if det <= 1e-12 * k00 * k11 {
+    if det <= SAME_ROW * k00 * k11 {
         return Some([0.5, 0.5]);
     }
     let both = [(-k11 * u[0] + k01 * u[1]) / det, (-k00 * u[1] + k01 * u[0]) / det];

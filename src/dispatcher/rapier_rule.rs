@@ -341,7 +341,14 @@ pub(crate) fn start_contact_answer(
                 m2: f.other_m,
             };
             let k = exact_contact(&super::cast::pos12_at(&centre, f.other_m, c.t0), &core, f.other_g, None);
-            first_time(&p, c, core_level(k, CastPolicy::CORE * r, tol), tol, k, general)
+            first_time(
+                &p,
+                c,
+                core_level(k.map(|k| k.dist), CastPolicy::CORE * r, tol),
+                tol,
+                k,
+                general,
+            )
         } else {
             general().map(|t| (t.status != ToiStatus::NoHit).then_some(t.time))
         }
@@ -357,8 +364,8 @@ pub(crate) fn start_contact_answer(
 }
 
 /// The level the core's signed distance may come down to in a step (rule 3 of the module
-/// docs), `start` its contact with the target at the start (`None`: a pair the contact query
-/// does not read, level 0), `radius` the core's: 0, the core reaching the target, when the
+/// docs), `start` its signed distance to the target at the start (`None`: a pair the contact
+/// query does not read, level 0), `radius` the core's: 0, the core reaching the target, when the
 /// core starts apart; when it starts touching or in — a body the solver has left jammed with
 /// its core against a wall, a residual approach of a few cm/s across a motion of tens of m/s
 /// along the wall — [`CastPolicy::ALLOWANCE`] of its radius below where it starts, never below
@@ -367,9 +374,10 @@ pub(crate) fn start_contact_answer(
 /// being clamped at the start of every step for an approach the step barely takes (the
 /// 8:1 ellipse jammed across the acute wedge of the CCD scene suite was held still for ten
 /// steps, its 55 m/s along the wall lost to 1 mm of approach).
-fn core_level(start: Option<Contact>, radius: Real, tol: Real) -> Real {
+/// The disc cast's closed form takes it too (`disc_cast`).
+pub(crate) fn core_level(start: Option<Real>, radius: Real, tol: Real) -> Real {
     match start {
-        Some(k) if k.dist <= tol => (k.dist.min(0.0) - CastPolicy::ALLOWANCE * radius).max(-CORE_DEPTH_LIMIT * radius),
+        Some(d) if d <= tol => (d.min(0.0) - CastPolicy::ALLOWANCE * radius).max(-CORE_DEPTH_LIMIT * radius),
         _ => 0.0,
     }
 }

@@ -66,7 +66,7 @@
 //! contact exactly as its translation does, so the same closed form answers it.
 
 use super::cast::{is_window, toi_to_parry, NonlinearCast};
-use super::rapier_rule::{hit_at, in_contact, CORE_DEPTH_LIMIT};
+use super::rapier_rule::{core_level, hit_at, in_contact};
 use super::support_shape::{support_shape, SupportScratch};
 use crate::numerics::math::{sin_cos, Real, Vector};
 use crate::numerics::motion::motion_is_finite;
@@ -381,19 +381,14 @@ fn start_contact_answer(
     // The core: the disc of CORE·r about the rotation centre (the disc's centre, or any point
     // of a disc that does not turn), down to distance 0 — or, when it starts touching the
     // target, a quarter of its radius below its start, never below CORE_DEPTH_LIMIT of it
-    // (`rapier_rule::core_level`, here on the core's closed-form distance).
+    // (`rapier_rule::core_level` on the core's closed-form distance).
     let t_core = if r <= 0.0 || travel < (1.0 - CastPolicy::CORE) * r + d0 {
         None
     } else {
         let centre = c.m2.start.rotation.inverse() * (c.m1.start * c.m1.local_center - c.m1.start.translation);
         let (core, at) = (CastPolicy::CORE * r, p.p0 + centre);
         let start = p.core.distance(at).0 - core - p.core.radius;
-        let level = if start <= tol {
-            (start.min(0.0) - CastPolicy::ALLOWANCE * core).max(-CORE_DEPTH_LIMIT * core)
-        } else {
-            0.0
-        };
-        level_entry(p, at, core + level, span, tol)
+        level_entry(p, at, core + core_level(Some(start), core, tol), span, tol)
     };
     let earliest = match (t_trans, t_core) {
         (Some(a), Some(b)) => Some(a.min(b)),
