@@ -16,8 +16,9 @@
 //! the face (negative: stopped short). The depth is measured on the collider's own shape (the
 //! polygon for the polygon method).
 //!
-//! Run: `cargo run --release --example wall_shots [output folder]` (default `target/examples-out`);
-//! writes `wall_shots.svg`.
+//! Run: `cargo run --example wall_shots [output folder]` (default `target/examples-out`); writes
+//! `wall_shots.svg`. That is the README's first command, a dev build (quick to compile, about 5 s
+//! to run); `--release` gives the time column of docs/rapier.md's table.
 
 /// The helpers this example uses, and only those: the drawing helpers and the wall-shot scene
 /// with what it needs (`common/mod.rs` holds every example's; this is the README's first command,
