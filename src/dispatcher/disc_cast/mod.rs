@@ -106,8 +106,8 @@ impl Core<'_> {
         if n >= 3 {
             // Inside a proper polygon the nearest boundary is the nearest edge line.
             let (mut best, mut at) = (Real::NEG_INFINITY, 0);
-            for i in 0..n {
-                let s = self.normals[i].dot(p - self.vertices[i]);
+            for (i, (v, normal)) in self.vertices.iter().zip(self.normals).enumerate() {
+                let s = normal.dot(p - *v);
                 if s > best {
                     (best, at) = (s, i);
                 }
@@ -120,11 +120,19 @@ impl Core<'_> {
         // Outside (or a segment core): the nearest point of the edges.
         let mut nearest = (Real::INFINITY, self.vertices[0]);
         let edges = if n == 2 { 1 } else { n };
-        for i in 0..edges {
-            let (a, b) = (self.vertices[i], self.vertices[(i + 1) % n]);
-            let e = b - a;
-            let lambda = ((p - a).dot(e) / e.length_squared()).clamp(0.0, 1.0);
-            let q = a + e * lambda;
+        // Each edge vᵢ → vᵢ₊₁ (no `%` in the loop: an integer division an edge).
+        let next = self.vertices.iter().cycle().skip(1);
+        for (&a, &b) in self.vertices.iter().zip(next).take(edges) {
+            // The foot of p on the edge, a + e·clamp((p − a)·e / |e|², 0, 1); the division only
+            // where the foot falls within the edge (the same point at either end).
+            let (e, along) = (b - a, (p - a).dot(b - a));
+            let q = if along <= 0.0 {
+                a
+            } else if along >= e.length_squared() {
+                a + e
+            } else {
+                a + e * (along / e.length_squared())
+            };
             let d2 = (p - q).length_squared();
             if d2 < nearest.0 {
                 nearest = (d2, q);
@@ -155,7 +163,7 @@ fn first_entry(core: &Core, p0: Vector, w: Vector, span: Real, grow: Real) -> Op
             }
             let s = above / -rate;
             if s < first {
-                let e = core.vertices[(i + 1) % n] - a;
+                let e = core.vertices[if i + 1 == n { 0 } else { i + 1 }] - a;
                 let along = (p0 + w * s - a).dot(e);
                 if (0.0..=e.length_squared()).contains(&along) {
                     first = s;
