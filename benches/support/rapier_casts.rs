@@ -888,8 +888,14 @@ pub fn table() {
     let mut parry_wrong: Vec<(Set, String)> = Vec::new();
     let sets = Set::ALL.into_iter().filter(|s| selected("RAPIER_CASTS_SET", s.name()));
     for set in sets {
-        for body in Body::ALL.into_iter().filter(|b| selected("RAPIER_CASTS_BODY", b.name())) {
-            for target in Target::ALL.into_iter().filter(|t| selected("RAPIER_CASTS_TARGET", t.name())) {
+        for body in Body::ALL
+            .into_iter()
+            .filter(|b| selected("RAPIER_CASTS_BODY", b.name()))
+        {
+            for target in Target::ALL
+                .into_iter()
+                .filter(|t| selected("RAPIER_CASTS_TARGET", t.name()))
+            {
                 let seeds: Vec<u64> = (0..cases()).map(|i| seed(body, target, set, i)).collect();
                 let cases = par_map(&seeds, |&s| make_case(body, target, set, s));
                 let answers: Vec<(Option<f64>, Option<f64>)> =

@@ -53,7 +53,11 @@
 //!   `CORE`·r + r_K, or a quarter of its radius deeper than it starts when it starts touching,
 //!   never past half of it) and the translation deepening the contact to min(−A, d₀ − A) (R = ρ + r_K +
 //!   level), at least `START_NUDGE` of the window after the start, with the exact contact of
-//!   that time for its witnesses, as the general path reports them.
+//!   that time for its witnesses, as the general path reports them — in closed form too: the
+//!   target's nearest point to the disc's centre and the normal there. The start's distance
+//!   from the disc's centre to the core is read once and serves the translation's level
+//!   search, and the core's when the core's centre is the disc's (the motion's `local_center`
+//!   at the shape's origin).
 //!
 //! Everything else — the disc as the target, a disc not turning about its centre, a target that
 //! turns or that is not a polygon or a disc, a contact at the start with

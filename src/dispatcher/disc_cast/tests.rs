@@ -472,7 +472,11 @@ fn a_disc_centred_on_a_boxs_corner_edge_or_centre_answers_as_the_general_path() 
     for (target, pose2) in boxes {
         let m2 = NonlinearRigidMotion::constant_position(pose2);
         for at in places {
-            for (v, w) in [(Vector::ZERO, 0.0), (Vector::new(3.0, 1.0), 0.0), (Vector::new(-2.0, 5.0), 4.0)] {
+            for (v, w) in [
+                (Vector::ZERO, 0.0),
+                (Vector::new(3.0, 1.0), 0.0),
+                (Vector::new(-2.0, 5.0), 4.0),
+            ] {
                 let m1 = NonlinearRigidMotion::new(Pose::new(at, 0.3), Vector::ZERO, v, w);
                 for policy in [CastPolicy::Rapier, CastPolicy::RapierConstantSpin] {
                     let d = SmoothDispatcher::default().with_cast_policy(policy);
