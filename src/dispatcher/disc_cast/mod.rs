@@ -327,32 +327,30 @@ impl<'a> DiscPair<'a> {
     /// The hit of a contact at the start reported at time `t`, with the pair's exact contact
     /// of that time for its witnesses, in each shape's frame as `rapier_rule::hit_at` gives
     /// them (the disc's at the rotation of its constant spin at `t`, parry's motion), in
-    /// closed form: the target's nearest point q to the disc's centre c (inside a polygon core,
-    /// its nearest edge's foot) and the outward normal n there, the target's witness q + r_K·n,
-    /// the disc's c − ρ·n. rapier reads only the time.
+    /// closed form ([`Self::hit_with`]). rapier reads only the time.
     fn start_contact_hit(&self, c: &NonlinearCast, t: Real) -> TimeOfImpact {
-        let (distance, point2, normal2) = self.distance(self.p0 + self.w * (t - c.t0));
-        let to_disc = c.m1.position_at_time(t).rotation.inverse() * self.rotation2;
-        let normal1 = to_disc * -normal2;
+        let rotation1 = c.m1.position_at_time(t).rotation;
         TimeOfImpact {
             status: ToiStatus::PenetratingAtStart,
-            time: t,
-            distance,
             distance_rate: 0.0,
-            point1: normal1 * self.rho,
-            point2,
-            normal1,
-            normal2,
-            cost: ToiCost::default(),
+            ..self.hit_with(c, t, rotation1)
         }
     }
 
     /// The hit at time `t` (apart at the start), with its witnesses and normals in each shape's
     /// frame: the disc's at the rotation its path has at `t`.
     fn hit(&self, c: &NonlinearCast, opts: &ToiOptions, t: Real) -> TimeOfImpact {
+        self.hit_with(c, t, rotation_at(c, opts, t))
+    }
+
+    /// The hit at time `t`, the disc turned by `rotation1` then: the target's nearest point q
+    /// to the disc's centre c (inside a polygon core, its nearest edge's foot) and the outward
+    /// normal n there, the target's witness q + r_K·n and the disc's c − ρ·n, each normal and
+    /// witness in its shape's frame, and the rate of the distance along n.
+    fn hit_with(&self, c: &NonlinearCast, t: Real, rotation1: Rotation) -> TimeOfImpact {
         let (dist, point2, normal2) = self.distance(self.p0 + self.w * (t - c.t0));
         // The target's normal, from the target's frame to the disc's at `t`.
-        let to_disc = rotation_at(c, opts, t).inverse() * self.rotation2;
+        let to_disc = rotation1.inverse() * self.rotation2;
         let normal1 = to_disc * -normal2;
         TimeOfImpact {
             status: ToiStatus::Hit,
