@@ -61,6 +61,20 @@ fn cases() -> usize {
         .and_then(|v| v.parse().ok())
         .unwrap_or(CASES)
 }
+
+/// Whether `name` is selected by the environment variable `var`: unset, or `name` starts with
+/// its value (`RAPIER_CASTS_BODY=disc`, `RAPIER_CASTS_SET=contact`, `RAPIER_CASTS_TARGET=Cuboid`;
+/// a target's name without its backquotes).
+fn selected(var: &str, name: &str) -> bool {
+    std::env::var(var).map_or(true, |v| name.trim_start_matches('`').starts_with(v.as_str()))
+}
+
+/// With `RAPIER_CASTS_PROFILE` set, the section makes each selected cast once, ours then
+/// parry's, and prints no table: a run for instruction counts
+/// (`valgrind --tool=callgrind --toggle-collect='*cast_shapes_nonlinear*'`).
+fn profile_only() -> bool {
+    std::env::var_os("RAPIER_CASTS_PROFILE").is_some()
+}
 /// The smallest start gap of the sets starting apart: two slops, so that parry's sweep starts
 /// apart too.
 const MIN_START_GAP: f64 = 2.0 * SLOP;
@@ -872,13 +886,25 @@ pub fn table() {
     let mut slow: Vec<(f64, f64, String)> = Vec::new();
     let mut wrong: Vec<String> = Vec::new();
     let mut parry_wrong: Vec<(Set, String)> = Vec::new();
-    for set in Set::ALL {
-        for body in Body::ALL {
-            for target in Target::ALL {
+    let sets = Set::ALL.into_iter().filter(|s| selected("RAPIER_CASTS_SET", s.name()));
+    for set in sets {
+        for body in Body::ALL
+            .into_iter()
+            .filter(|b| selected("RAPIER_CASTS_BODY", b.name()))
+        {
+            for target in Target::ALL
+                .into_iter()
+                .filter(|t| selected("RAPIER_CASTS_TARGET", t.name()))
+            {
                 let seeds: Vec<u64> = (0..cases()).map(|i| seed(body, target, set, i)).collect();
                 let cases = par_map(&seeds, |&s| make_case(body, target, set, s));
                 let answers: Vec<(Option<f64>, Option<f64>)> =
                     cases.iter().map(|c| (ours_cast(c, &d), parry_cast(c))).collect();
+                if profile_only() {
+                    let hits = answers.iter().filter(|a| a.0.is_some()).count();
+                    println!("{} – {}, {}: {hits} hits", body.name(), target.name(), set.name());
+                    continue;
+                }
                 let idx: Vec<usize> = (0..cases.len()).collect();
                 let judged = par_map(&idx, |&i| judge_case(&cases[i], answers[i].0, answers[i].1));
                 let mut rows = Vec::new();
@@ -928,6 +954,9 @@ pub fn table() {
             }
         }
     }
+    if profile_only() {
+        return;
+    }
     println!("\n### All pair kinds together\n");
     println!("| pair kind | set | cases | hits (ref) | ours µs/cast | parry µs/cast | ratio (means) | per-case ratio median / min | ours miss / false | parry miss / false | worst \\|Δf\\| ours | worst \\|Δf\\| parry |");
     println!("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
@@ -969,6 +998,9 @@ pub fn table() {
 
 fn print_row(label: &str, set: Set, rows: &[&Row]) {
     let n = rows.len();
+    if n == 0 {
+        return;
+    }
     let hits = rows.iter().filter(|r| r.j.ref_hit.is_some()).count();
     let mo = rows.iter().map(|r| r.ours_s).sum::<f64>() / n as f64;
     let mp = rows.iter().map(|r| r.parry_s).sum::<f64>() / n as f64;

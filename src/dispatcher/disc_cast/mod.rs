@@ -53,7 +53,11 @@
 //!   `CORE`·r + r_K, or a quarter of its radius deeper than it starts when it starts touching,
 //!   never past half of it) and the translation deepening the contact to min(−A, d₀ − A) (R = ρ + r_K +
 //!   level), at least `START_NUDGE` of the window after the start, with the exact contact of
-//!   that time for its witnesses, as the general path reports them.
+//!   that time for its witnesses, as the general path reports them — in closed form too: the
+//!   target's nearest point to the disc's centre and the normal there. The start's distance
+//!   from the disc's centre to the core is read once and serves the translation's level
+//!   search, and the core's when the core's centre is the disc's (the motion's `local_center`
+//!   at the shape's origin).
 //!
 //! Everything else — the disc as the target, a disc not turning about its centre, a target that
 //! turns or that is not a polygon or a disc, a contact at the start with
@@ -66,7 +70,7 @@
 //! contact exactly as its translation does, so the same closed form answers it.
 
 use super::cast::{is_window, toi_to_parry, NonlinearCast};
-use super::rapier_rule::{core_level, hit_at, in_contact};
+use super::rapier_rule::{core_level, in_contact};
 use super::support_shape::{support_shape, SupportScratch};
 use crate::numerics::math::{sin_cos, Real, Vector};
 use crate::numerics::motion::motion_is_finite;
@@ -77,6 +81,10 @@ use crate::{CastPolicy, Ellipse};
 use parry2d_f64::math::Rotation;
 use parry2d_f64::query::{NonlinearRigidMotion, ShapeCastHit, Unsupported};
 use parry2d_f64::shape::ShapeType;
+
+/// What [`Core::distance`] sees from a point: the signed distance to the core, the core's
+/// nearest point and the outward unit normal there.
+type Seen = (Real, Vector, Vector);
 
 /// A target's core: a convex polygon given by its vertices (counter-clockwise) and the outward
 /// unit normals of its edges vᵢ → vᵢ₊₁, a segment (two vertices, two opposite normals) or a
@@ -92,7 +100,7 @@ impl Core<'_> {
     /// The signed distance from `p` to the core (not its dilation), the core's point nearest to
     /// `p` and the unit normal from it towards `p` (outward: inside, the normal of the nearest
     /// edge). A point at a point core takes the x axis.
-    fn distance(&self, p: Vector) -> (Real, Vector, Vector) {
+    fn distance(&self, p: Vector) -> Seen {
         let n = self.vertices.len();
         if n == 1 {
             let d = (p - self.vertices[0]).length();
@@ -102,8 +110,8 @@ impl Core<'_> {
         if n >= 3 {
             // Inside a proper polygon the nearest boundary is the nearest edge line.
             let (mut best, mut at) = (Real::NEG_INFINITY, 0);
-            for i in 0..n {
-                let s = self.normals[i].dot(p - self.vertices[i]);
+            for (i, (v, normal)) in self.vertices.iter().zip(self.normals).enumerate() {
+                let s = normal.dot(p - *v);
                 if s > best {
                     (best, at) = (s, i);
                 }
@@ -116,11 +124,19 @@ impl Core<'_> {
         // Outside (or a segment core): the nearest point of the edges.
         let mut nearest = (Real::INFINITY, self.vertices[0]);
         let edges = if n == 2 { 1 } else { n };
-        for i in 0..edges {
-            let (a, b) = (self.vertices[i], self.vertices[(i + 1) % n]);
-            let e = b - a;
-            let lambda = ((p - a).dot(e) / e.length_squared()).clamp(0.0, 1.0);
-            let q = a + e * lambda;
+        // Each edge vᵢ → vᵢ₊₁ (no `%` in the loop: an integer division an edge).
+        let next = self.vertices.iter().cycle().skip(1);
+        for (&a, &b) in self.vertices.iter().zip(next).take(edges) {
+            // The foot of p on the edge, a + e·clamp((p − a)·e / |e|², 0, 1); the division only
+            // where the foot falls within the edge (the same point at either end).
+            let (e, along) = (b - a, (p - a).dot(b - a));
+            let q = if along <= 0.0 {
+                a
+            } else if along >= e.length_squared() {
+                a + e
+            } else {
+                a + e * (along / e.length_squared())
+            };
             let d2 = (p - q).length_squared();
             if d2 < nearest.0 {
                 nearest = (d2, q);
@@ -151,7 +167,7 @@ fn first_entry(core: &Core, p0: Vector, w: Vector, span: Real, grow: Real) -> Op
             }
             let s = above / -rate;
             if s < first {
-                let e = core.vertices[(i + 1) % n] - a;
+                let e = core.vertices[if i + 1 == n { 0 } else { i + 1 }] - a;
                 let along = (p0 + w * s - a).dot(e);
                 if (0.0..=e.length_squared()).contains(&along) {
                     first = s;
@@ -249,7 +265,10 @@ pub(crate) fn disc_cast(
         _ => return None,
     };
     let p = DiscPair::new(c, core, rho);
-    let (d0, ..) = p.distance(p.p0);
+    // The core seen from the disc's centre at the start: the start's distance, and the start
+    // of both of rule 3's searches (read once).
+    let seen0 = core.distance(p.p0);
+    let d0 = seen0.0 - rho - core.radius;
     if !d0.is_finite() || !p.w.is_finite() {
         return None;
     }
@@ -258,7 +277,7 @@ pub(crate) fn disc_cast(
         // rule then).
         let still = |m: &NonlinearRigidMotion| m.linvel == Vector::ZERO && m.angvel == 0.0;
         let disc_is_fast = !still(c.m1) || still(c.m2);
-        return (start_contact && disc_is_fast).then(|| start_contact_answer(c, &p, d0, opts));
+        return (start_contact && disc_is_fast).then(|| start_contact_answer(c, &p, seen0, d0, opts));
     }
     let delta = opts.target_distance;
     let tol = opts.distance_tolerance * c.size();
@@ -300,17 +319,38 @@ impl<'a> DiscPair<'a> {
 
     /// The pair's signed distance with the disc's centre at `p`, the target's witness and the
     /// target's outward normal there.
-    fn distance(&self, p: Vector) -> (Real, Vector, Vector) {
+    fn distance(&self, p: Vector) -> Seen {
         let (sd, q, normal) = self.core.distance(p);
         (sd - self.rho - self.core.radius, q + normal * self.core.radius, normal)
+    }
+
+    /// The hit of a contact at the start reported at time `t`, with the pair's exact contact
+    /// of that time for its witnesses, in each shape's frame as `rapier_rule::hit_at` gives
+    /// them (the disc's at the rotation of its constant spin at `t`, parry's motion), in
+    /// closed form ([`Self::hit_with`]). rapier reads only the time.
+    fn start_contact_hit(&self, c: &NonlinearCast, t: Real) -> TimeOfImpact {
+        let rotation1 = c.m1.position_at_time(t).rotation;
+        TimeOfImpact {
+            status: ToiStatus::PenetratingAtStart,
+            distance_rate: 0.0,
+            ..self.hit_with(c, t, rotation1)
+        }
     }
 
     /// The hit at time `t` (apart at the start), with its witnesses and normals in each shape's
     /// frame: the disc's at the rotation its path has at `t`.
     fn hit(&self, c: &NonlinearCast, opts: &ToiOptions, t: Real) -> TimeOfImpact {
+        self.hit_with(c, t, rotation_at(c, opts, t))
+    }
+
+    /// The hit at time `t`, the disc turned by `rotation1` then: the target's nearest point q
+    /// to the disc's centre c (inside a polygon core, its nearest edge's foot) and the outward
+    /// normal n there, the target's witness q + r_K·n and the disc's c − ρ·n, each normal and
+    /// witness in its shape's frame, and the rate of the distance along n.
+    fn hit_with(&self, c: &NonlinearCast, t: Real, rotation1: Rotation) -> TimeOfImpact {
         let (dist, point2, normal2) = self.distance(self.p0 + self.w * (t - c.t0));
         // The target's normal, from the target's frame to the disc's at `t`.
-        let to_disc = rotation_at(c, opts, t).inverse() * self.rotation2;
+        let to_disc = rotation1.inverse() * self.rotation2;
         let normal1 = to_disc * -normal2;
         TimeOfImpact {
             status: ToiStatus::Hit,
@@ -352,12 +392,14 @@ fn rotation_at(c: &NonlinearCast, opts: &ToiOptions, t: Real) -> Rotation {
     }
 }
 
-/// Rule 3 of `rapier_rule` for a disc pair in contact at the start (`d0`): the earlier of the
-/// core's contact and the translation's deepening to min(−A, d₀ − A), each a first entry
-/// (module docs), as `rapier_rule::start_contact_answer` answers it.
+/// Rule 3 of `rapier_rule` for a disc pair in contact at the start (`d0`; `seen0` the core seen
+/// from the disc's centre then): the earlier of the core's contact and the translation's
+/// deepening to min(−A, d₀ − A), each a first entry (module docs), as
+/// `rapier_rule::start_contact_answer` answers it.
 fn start_contact_answer(
     c: &NonlinearCast,
     p: &DiscPair,
+    seen0: Seen,
     d0: Real,
     opts: &ToiOptions,
 ) -> Result<Option<ShapeCastHit>, Unsupported> {
@@ -376,7 +418,7 @@ fn start_contact_answer(
     let t_trans = if travel < d0 - level {
         None
     } else {
-        level_entry(p, p.p0, level + p.rho, span, tol)
+        level_entry(p, p.p0, seen0, level + p.rho, span, tol)
     };
     // The core: the disc of CORE·r about the rotation centre (the disc's centre, or any point
     // of a disc that does not turn), down to distance 0 — or, when it starts touching the
@@ -385,24 +427,32 @@ fn start_contact_answer(
     let t_core = if r <= 0.0 || travel < (1.0 - CastPolicy::CORE) * r + d0 {
         None
     } else {
-        let centre = c.m2.start.rotation.inverse() * (c.m1.start * c.m1.local_center - c.m1.start.translation);
-        let (core, at) = (CastPolicy::CORE * r, p.p0 + centre);
-        let start = p.core.distance(at).0 - core - p.core.radius;
-        level_entry(p, at, core + core_level(Some(start), core, tol), span, tol)
+        // The core's centre: the disc's own (seen at the start already) unless the disc, not
+        // turning, has its rotation centre elsewhere.
+        let (at, seen) = if c.m1.local_center == Vector::ZERO {
+            (p.p0, seen0)
+        } else {
+            let centre = c.m2.start.rotation.inverse() * (c.m1.start * c.m1.local_center - c.m1.start.translation);
+            let at = p.p0 + centre;
+            (at, p.core.distance(at))
+        };
+        let core = CastPolicy::CORE * r;
+        let start = seen.0 - core - p.core.radius;
+        level_entry(p, at, seen, core + core_level(Some(start), core, tol), span, tol)
     };
     let earliest = match (t_trans, t_core) {
         (Some(a), Some(b)) => Some(a.min(b)),
         (a, b) => a.or(b),
     };
-    toi_to_parry(Ok(earliest.map(|s| hit_at(c, (c.t0 + s).max(nudge), d0))))
+    toi_to_parry(Ok(earliest.map(|s| p.start_contact_hit(c, (c.t0 + s).max(nudge)))))
 }
 
-/// The first time after the start (as an offset) at which the point `p0` moving with the pair's
-/// relative velocity comes within `reach` of the target's boundary: sd_K(p) − r_K = `reach`,
-/// as `translation_level` finds it — at the start itself when it is there within `tol` and
-/// coming closer, never when it is there and leaving.
-fn level_entry(p: &DiscPair, p0: Vector, reach: Real, span: Real, tol: Real) -> Option<Real> {
-    let (sd, _, normal) = p.core.distance(p0);
+/// The first time after the start (as an offset) at which the point `p0` (from which the core
+/// is `seen`) moving with the pair's relative velocity comes within `reach` of the target's
+/// boundary: sd_K(p) − r_K = `reach`, as `translation_level` finds it — at the start itself
+/// when it is there within `tol` and coming closer, never when it is there and leaving.
+fn level_entry(p: &DiscPair, p0: Vector, seen: Seen, reach: Real, span: Real, tol: Real) -> Option<Real> {
+    let (sd, _, normal) = seen;
     if sd - p.core.radius - reach <= tol {
         return (normal.dot(p.w) < 0.0).then_some(0.0);
     }

@@ -429,3 +429,68 @@ fn start_distance(c: &NonlinearCast, target: &dyn Shape) -> Real {
     let pos12 = crate::dispatcher::cast::pos12_at(c.m1, c.m2, c.t0);
     exact_contact(&pos12, c.g1, target, None).unwrap().dist
 }
+
+/// Issue 29's degenerate starts through rapier's call: a unit disc centred on a corner of the
+/// unit box [0, 1]², and within 1e-6 of it, of an edge, of the centre (`tests/degenerate_starts.rs`),
+/// still, translating or spinning, against the box as this crate's sharp polygon and as parry's
+/// `Cuboid`: the closed form takes every one and answers as the general path.
+#[test]
+fn a_disc_centred_on_a_boxs_corner_edge_or_centre_answers_as_the_general_path() {
+    let e = 1e-6;
+    let (v, m, centre) = (Vector::new(1.0, 1.0), Vector::new(1.0, 0.5), Vector::new(0.5, 0.5));
+    let places = [
+        v,
+        Vector::ZERO,
+        v + Vector::new(e, e),
+        v - Vector::new(e, e),
+        v - Vector::new(e, 0.0),
+        v + Vector::new(0.0, e),
+        m,
+        m - Vector::new(e, 0.0),
+        m + Vector::new(e, 0.0),
+        m + Vector::new(0.0, e),
+        centre,
+        centre + Vector::new(e, -e),
+    ];
+    let unit_box = RoundedPolygon::new(
+        &[
+            Vector::new(0.0, 0.0),
+            Vector::new(1.0, 0.0),
+            Vector::new(1.0, 1.0),
+            Vector::new(0.0, 1.0),
+        ],
+        0.0,
+    );
+    let cuboid = Cuboid::new(Vector::new(0.5, 0.5));
+    // Each box with the pose that puts its core on [0, 1]².
+    let boxes: [(&dyn Shape, Pose); 2] = [
+        (&unit_box, Pose::IDENTITY),
+        (&cuboid, Pose::from_translation(Vector::new(0.5, 0.5))),
+    ];
+    let disc = Ellipse::new(1.0, 1.0);
+    let mut tally = Tally::default();
+    for (target, pose2) in boxes {
+        let m2 = NonlinearRigidMotion::constant_position(pose2);
+        for at in places {
+            for (v, w) in [
+                (Vector::ZERO, 0.0),
+                (Vector::new(3.0, 1.0), 0.0),
+                (Vector::new(-2.0, 5.0), 4.0),
+            ] {
+                let m1 = NonlinearRigidMotion::new(Pose::new(at, 0.3), Vector::ZERO, v, w);
+                for policy in [CastPolicy::Rapier, CastPolicy::RapierConstantSpin] {
+                    let d = SmoothDispatcher::default().with_cast_policy(policy);
+                    let mut c = NonlinearCast::new(&m1, &disc, &m2, target, (0.0, 1.0), false);
+                    c.spin_at_start = policy == CastPolicy::RapierConstantSpin;
+                    let (opts, rule) = d.cast_setup(&c);
+                    let fast = disc_cast(&c, &opts, rule.start_contact).expect("the closed form takes it");
+                    let general = d.general_cast(&c, &opts, rule);
+                    compare(&c, &opts, fast, general, &mut tally, target);
+                }
+            }
+        }
+    }
+    // Every start is in contact; the still disc never deepens it, the moving ones do.
+    assert_eq!(tally.apart_hits + tally.apart_misses, 0, "{tally:?}");
+    assert!(tally.contact_hits > 0 && tally.contact_misses > 0, "{tally:?}");
+}
