@@ -120,7 +120,7 @@ mod tests {
                     let (ci, cj) = (&colliders[i], &colliders[j]);
                     let (bi, bj) = (&bodies[ci.body as usize], &bodies[cj.body as usize]);
                     let fast = bi.fast || bj.fast;
-                    let allowed = !(bi.still && !bj.turning || bj.still && !bi.turning);
+                    let allowed = (bi.turning || !bj.still) && (bj.turning || !bi.still);
                     if fast && allowed && ci.body != cj.body && ci.overlaps(cj) {
                         brute.push(PassPair::new(i as u32, j as u32));
                     }
