@@ -64,7 +64,8 @@ pub struct MovingPairsOptions {
     /// checked against still targets ([`MovingPairsOptions::fixed_targets`]). Default π/4,
     /// rapier's own per-step rotation cap (`MAX_ROTATION` of rapier's solver): the turn rapier's
     /// CCD is built for; past it the nlerped path drifts from the body's (by any amount past
-    /// π/2, the other way round past π).
+    /// π/2, the other way round past π). 0 checks every fast body that turns at all; a NaN
+    /// or +∞ checks none (as `fixed_targets: false`).
     pub fast_turn: f64,
 }
 
