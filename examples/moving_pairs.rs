@@ -10,15 +10,16 @@
 //! and two summary lines, `head-on: …` and `box: …`, the pass's figure first.
 //!
 //! `cargo run --release --example moving_pairs` (a few minutes: the box runs five times); `-- --shots` prints
-//! every head-on shot.
+//! every head-on shot; `-- --seed=N` launches the box's bodies from the random sequence of N (the
+//! default: `BOX_SEED`); `-- --box` runs only the box (its table and its summary line).
 
 #[path = "common/mod.rs"]
 mod common;
 
 use common::moving_pairs::{Hooks, Launch, Verdicts};
 use common::moving_scenes::{
-    crossing_shots, head_on_pairs, head_on_shots, pass_options, pile_cost, plank_shots, run_box, run_shot,
-    run_shot_with, wall_bounce_energy, BoxResult, PlankWay, ShotResult, BOX_BODIES, BOX_STEPS, HEAD_ON_STEPS,
+    crossing_shots, head_on_pairs, head_on_shots, pass_options, pile_cost, plank_shots, run_box_seeded, run_shot,
+    run_shot_with, wall_bounce_energy, BoxResult, PlankWay, ShotResult, BOX_BODIES, BOX_SEED, BOX_STEPS, HEAD_ON_STEPS,
     SLOW_SPEED, SLOW_STEPS,
 };
 use std::time::Instant;
@@ -48,14 +49,28 @@ fn conservation(r: &ShotResult, launches: &[Launch]) -> (f64, f64) {
 
 fn main() {
     let every_shot = std::env::args().any(|a| a == "--shots");
+    let box_only = std::env::args().any(|a| a == "--box");
+    let seed = std::env::args()
+        .find_map(|a| {
+            a.strip_prefix("--seed=")
+                .map(|n| n.parse::<u64>().expect("--seed=N: N a number"))
+        })
+        .unwrap_or(BOX_SEED);
     let t = Instant::now();
-    let head = head_on(every_shot);
-    other_scenes();
-    let boxes = the_box();
-    pile_table(&boxes[0]);
+    let head = (!box_only).then(|| {
+        let head = head_on(every_shot);
+        other_scenes();
+        head
+    });
+    let boxes = the_box(seed);
+    if !box_only {
+        pile_table(&boxes[0]);
+    }
     println!();
     println!("(ran in {:.1} s)", t.elapsed().as_secs_f64());
-    println!("{head}");
+    if let Some(head) = head {
+        println!("{head}");
+    }
     box_summary(&boxes);
 }
 
@@ -265,20 +280,21 @@ fn other_scenes() {
 }
 
 /// The box's table: with the pass and rapier alone, with `CoreContactHooks`, without hooks, and
-/// with the pass and `OneBounceHooks` (in that order).
-fn the_box() -> [BoxResult; 5] {
+/// with the pass and `OneBounceHooks` (in that order); the bodies launched from `seed`.
+fn the_box(seed: u64) -> [BoxResult; 5] {
+    let run = |options, hooks| run_box_seeded(seed, BOX_STEPS, options, hooks, &|_| {});
     let boxes = [
-        run_box(BOX_STEPS, Some(pass_options()), Hooks::Core),
-        run_box(BOX_STEPS, None, Hooks::Core),
-        run_box(BOX_STEPS, Some(pass_options()), Hooks::None),
-        run_box(BOX_STEPS, None, Hooks::None),
-        run_box(BOX_STEPS, Some(pass_options()), Hooks::OneBounce),
+        run(Some(pass_options()), Hooks::Core),
+        run(None, Hooks::Core),
+        run(Some(pass_options()), Hooks::None),
+        run(None, Hooks::None),
+        run(Some(pass_options()), Hooks::OneBounce),
     ];
     println!();
     println!(
         "The closed box: {BOX_BODIES} bullets of every family (50–250 m/s, spins to ±300 rad/s), restitution 1, \
-         no friction, {BOX_STEPS} steps (10 s); with CoreContactHooks (as docs/rapier.md advises for bouncing \
-         bodies), without them, and with OneBounceHooks"
+         no friction, {BOX_STEPS} steps (10 s), seed {seed}; with CoreContactHooks (as docs/rapier.md advises for \
+         bouncing bodies), without them, and with OneBounceHooks"
     );
     println!(
         "{:<27} {:>8} {:>10} {:>8} {:>4} {:>4} {:>4} {:>6} {:>9} {:>10} {:>10} {:>7} {:>7} {:>6}",

@@ -17,11 +17,14 @@ use common::moving_scenes::{
 /// The final state of the closed box after [`DETERMINISM_STEPS`] steps with the pass: FNV-1a of
 /// every body's pose and velocities. The same constant is checked by `crates/parallel-tests`
 /// on rapier's parallel pipeline (1 and 2 workers). Re-recorded only with the reason in the
-/// CHANGELOG (0xB7D8_7452_1F0F_256E before the rapier casts' face-following axis and
+/// CHANGELOG (0xF3F6_02C6_477A_25F5 before `MovingPairsOptions::fixed_targets` (on by default)
+/// swept the box's bodies spun past π/4 a step against the walls and stopped them at their
+/// first contact on their own path — with the option off the box gives that state, bit for bit;
+/// 0xB7D8_7452_1F0F_256E before the rapier casts' face-following axis and
 /// sphere bound of issue 29 item 3 changed cast answers within their tolerance; 0x2AE1_1BF4_F65A_DC63 before the box ran with
 /// `CoreContactHooks`; 0x0959_51B3_1525_47E8 before a core that starts touching its target
 /// could go a quarter of its radius deeper a step, issue 29 item 1).
-const MOVING_BOX_STATE: u64 = 0xF3F6_02C6_477A_25F5;
+const MOVING_BOX_STATE: u64 = 0x3E34_D514_B540_7A8D;
 /// Steps of the determinism runs.
 const DETERMINISM_STEPS: usize = 150;
 
@@ -194,25 +197,30 @@ fn crossing_bullets_and_a_fast_plank_are_never_passed_through() {
 }
 
 /// The closed box over 10 s, with `CoreContactHooks` as docs/rapier.md advises for bouncing
-/// bodies: no pair through each other, no body out of the box, no NaN, no panic with the pass.
-/// (Without the hooks, restitution on the core contacts spins bodies up to thousands of rad/s
-/// and rapier's own CCD lets some into and out through the walls: the example prints it.)
+/// bodies and with `OneBounceHooks`: no pair through each other, no body out of the box, no NaN,
+/// no panic with the pass. (Without the hooks, restitution on the core contacts spins bodies up
+/// to thousands of rad/s and rapier's own CCD lets some into and out through the walls: the
+/// example prints it. With `OneBounceHooks` a parry cuboid spun to 2,470 rad/s crossed a wall
+/// before `MovingPairsOptions::fixed_targets`.)
 #[test]
 fn the_closed_box_has_no_pair_through_and_no_body_out() {
-    let with = run_box(common::moving_scenes::BOX_STEPS, Some(pass_options()), true);
-    println!(
-        "box with the pass: {} through, {} out, {} into a wall, energy after/before {:.3}, casts {}, stops {}",
-        with.verdicts.through,
-        with.out_of_box,
-        with.in_wall,
-        with.energy_ratio,
-        with.totals.casts,
-        with.totals.stopped_bodies
-    );
-    assert_eq!(with.verdicts.through, 0);
-    assert_eq!(with.out_of_box, 0);
-    assert!(!with.nan && !with.panicked);
-    assert_eq!(with.totals.not_done, 0, "a pass ran out of events");
+    for hooks in [Hooks::Core, Hooks::OneBounce] {
+        let with = run_box(common::moving_scenes::BOX_STEPS, Some(pass_options()), hooks);
+        println!(
+            "box with the pass, {hooks:?}: {} through, {} out, {} into a wall, energy after/before {:.3}, casts {}, \
+             stops {}",
+            with.verdicts.through,
+            with.out_of_box,
+            with.in_wall,
+            with.energy_ratio,
+            with.totals.casts,
+            with.totals.stopped_bodies
+        );
+        assert_eq!(with.verdicts.through, 0, "{hooks:?}");
+        assert_eq!(with.out_of_box, 0, "{hooks:?}");
+        assert!(!with.nan && !with.panicked, "{hooks:?}");
+        assert_eq!(with.totals.not_done, 0, "{hooks:?}: a pass ran out of events");
+    }
 }
 
 /// Two runs of the box give the same bits, and the recorded ones (with and without rapier's
@@ -225,4 +233,63 @@ fn the_closed_box_is_deterministic_to_the_bit() {
     println!("box after {DETERMINISM_STEPS} steps: {a:016x} {b:016x}");
     assert_eq!(a, b, "two runs differ");
     assert_eq!(a, MOVING_BOX_STATE, "the box's final state changed: {a:#018x}");
+}
+
+/// A parry cuboid spun past rapier's rotation cap (±2,500 rad/s: 42 rad a step) shot at a fixed
+/// thin wall (a parry cuboid 0.1 m thick) stays on its side with the pass, whose
+/// `fixed_targets` sweeps it against the wall on its own path and stops it at its first
+/// contact there (the solver then sees a contact point that approaches, and bounces it). With
+/// `fixed_targets` off, the pass leaves the wall to rapier's CCD, whose sweep nlerps the turn
+/// the short way round: some shots cross the wall (the scene tests the option).
+#[test]
+fn a_cuboid_spun_past_rapiers_cap_stays_on_its_side_of_a_fixed_thin_wall() {
+    use common::moving_pairs::{Launch, Run};
+    use rapier2d_f64::prelude::Vector;
+    let wall_x = 3.0;
+    // Shots that crossed, shots that end moving away from the wall (bounced), shots.
+    let crossed = |fixed_targets: bool| -> (usize, usize, usize) {
+        let (mut crossed, mut bounced, mut shots) = (0, 0, 0);
+        for &speed in &[60.0, 150.0, 330.0, 1000.0] {
+            for &spin in &[2500.0, -2500.0] {
+                for k in 0..6 {
+                    let launch = Launch {
+                        family: Family::Cuboid,
+                        scale: 1.0,
+                        position: Vector::new(-3.0, 0.1 * k as f64),
+                        angle: 0.53 * k as f64,
+                        velocity: Vector::new(speed, 0.2 * speed * (k as f64 - 2.5) / 2.5),
+                        spin,
+                        ccd: true,
+                    };
+                    let options = smooth_ccd2d::MovingPairsOptions {
+                        fixed_targets,
+                        ..pass_options()
+                    };
+                    let mut run = Run::new(&[launch], 0.0, Some(options));
+                    run.wall(Vector::new(wall_x, 0.0), Vector::new(0.05, 40.0), 0.0);
+                    let mut through = false;
+                    for _ in 0..40 {
+                        run.step();
+                        assert!(run.finite(), "{launch:?}: NaN");
+                        through |= run.centres()[0].com.x >= wall_x;
+                    }
+                    crossed += usize::from(through);
+                    bounced += usize::from(run.world.bodies[run.bodies[0].body].linvel().x < 0.0);
+                    shots += 1;
+                }
+            }
+        }
+        (crossed, bounced, shots)
+    };
+    let (with, bounced, shots) = crossed(true);
+    let (without, _, _) = crossed(false);
+    println!(
+        "spun cuboid at a thin wall: {with} of {shots} crossed with fixed_targets ({bounced} bounced back), \
+         {without} without"
+    );
+    assert_eq!(with, 0, "{with} of {shots} shots crossed the wall with fixed_targets");
+    assert!(
+        without > 0,
+        "no shot crossed without fixed_targets: the scene tests nothing"
+    );
 }

@@ -48,14 +48,23 @@ macro_rules! moving_pairs_rapier {
         /// `Stopped` intersection event (with `ActiveEvents::COLLISION_EVENTS` on either
         /// collider, after the `FILTER_INTERSECTION_PAIR` hook), as rapier's CCD reports one.
         /// Disabled bodies and colliders, fixed bodies and bodies asleep at the start of the
-        /// step take no part.
+        /// step take no part as moving bodies.
+        ///
+        /// **Bodies spun past rapier's regime** (`MovingPairsOptions::fixed_targets`, on by
+        /// default). A fast body that turns by more than `MovingPairsOptions::fast_turn` (π/4,
+        /// rapier's cap) in the step is also checked against the solid colliders rapier holds
+        /// still — of no body, of a fixed body, of a body asleep — whose boxes meet its swept
+        /// box, in the same event loop: its first contact on its own path stops it there,
+        /// where rapier's sweep (which nlerps the turn the short way) may have left it inside
+        /// a wall with contact points the solver sees leaving.
         ///
         /// **Cost.** `before_step` copies the pose of every awake dynamic or kinematic body;
         /// `after_step` compares them with the new poses, and stops there when no body is a
         /// fast body of the scope. Otherwise the pairs come from a sort and sweep of the fast
         /// bodies' swept boxes, O((k + n) log k) for k fast colliders among n moving ones,
-        /// plus one time of impact per pair found. No allocation once the buffers have grown
-        /// to the scene.
+        /// plus one time of impact per pair found; a step with a body past the turn also scans
+        /// the collider set once for its still targets (O(n) box tests). No allocation once
+        /// the buffers have grown to the scene.
         ///
         /// **Determinism.** The records follow the order of the body set and the pairs are
         /// sorted by collider, so two runs of the same scene give the same bits (with rapier's
@@ -190,6 +199,9 @@ macro_rules! moving_pairs_rapier {
                 self.pairs.clear();
                 if report.fast_bodies > 0 {
                     self.gather_colliders(bodies, colliders);
+                    if report.turning_bodies > 0 {
+                        self.gather_targets(dt, bodies, colliders);
+                    }
                     self.broad.pairs(&self.bodies, &self.colliders, &mut self.pairs);
                     self.filter_pairs(bodies, colliders, hooks);
                     report.pairs = self.pairs.len();
@@ -277,8 +289,16 @@ macro_rules! moving_pairs_rapier {
                         && path.max_point_travel(reach)
                             > self.options.fast_fraction * Self::thickness(&mut self.thickness_cache, rb, colliders);
                     report.fast_bodies += usize::from(fast);
-                    self.bodies
-                        .push(PassBody::new(path, fast, rb.is_dynamic(), reach));
+                    let mut body = PassBody::new(path, fast, rb.is_dynamic(), reach);
+                    // Past rapier's regime: its spin over the step (what rapier's sweep had to
+                    // follow, whatever its clamp left of it) or the path's turn.
+                    let spin_turn = ($b::real64(rb.angvel()) * dt).abs();
+                    body.turning = fast
+                        && rb.is_dynamic()
+                        && self.options.fixed_targets
+                        && spin_turn.max(path.turn().abs()) > self.options.fast_turn;
+                    report.turning_bodies += usize::from(body.turning);
+                    self.bodies.push(body);
                     self.body_handles.push(h);
                 }
             }
@@ -330,9 +350,50 @@ macro_rules! moving_pairs_rapier {
                 }
             }
 
+            /// The still targets of the turning bodies (`MovingPairsOptions::fixed_targets`):
+            /// every enabled solid collider of no body, of a fixed body or of a body asleep
+            /// whose box meets the box of the turning bodies' swept boxes, each a still body of
+            /// its own at its pose. A scan of the collider set, done only in a step with a
+            /// turning body.
+            fn gather_targets(&mut self, dt: f64, bodies: &RigidBodySet, colliders: &ColliderSet) {
+                let (mut lo, mut hi) = (
+                    $crate::__moving_pairs::Vector::splat(f64::INFINITY),
+                    $crate::__moving_pairs::Vector::splat(f64::NEG_INFINITY),
+                );
+                for c in &self.colliders {
+                    if self.bodies[c.body as usize].turning {
+                        lo = lo.min(c.min);
+                        hi = hi.max(c.max);
+                    }
+                }
+                for (ch, co) in colliders.iter_enabled() {
+                    if co.is_sensor() {
+                        continue;
+                    }
+                    let still = co
+                        .parent()
+                        .and_then(|h| bodies.get(h))
+                        .is_none_or(|rb| rb.is_enabled() && (rb.is_fixed() || rb.is_sleeping()));
+                    if !still {
+                        continue;
+                    }
+                    let aabb = co.compute_aabb();
+                    let (min, max) = ($b::vector64(aabb.mins), $b::vector64(aabb.maxs));
+                    if !(min.x <= hi.x && lo.x <= max.x && min.y <= hi.y && lo.y <= max.y) {
+                        continue;
+                    }
+                    let index = self.bodies.len() as u32;
+                    self.bodies.push(PassBody::target(&$b::pose64(co.position()), dt));
+                    self.body_handles
+                        .push(co.parent().unwrap_or(RigidBodyHandle::invalid()));
+                    self.colliders.push(PassCollider::target(index, min, max));
+                    self.collider_handles.push(ch);
+                }
+            }
+
             /// Keeps the pairs rapier would make collide (solid) or report (sensors).
             fn filter_pairs(&mut self, bodies: &RigidBodySet, colliders: &ColliderSet, hooks: &dyn PhysicsHooks) {
-                let (handles, body_handles, records) = (&self.collider_handles, &self.body_handles, &self.colliders);
+                let handles = &self.collider_handles;
                 self.pairs.retain_mut(|p| {
                     let (ch1, ch2) = (handles[p.a as usize], handles[p.b as usize]);
                     let (co1, co2) = (&colliders[ch1], &colliders[ch2]);
@@ -344,8 +405,8 @@ macro_rules! moving_pairs_rapier {
                         colliders,
                         collider1: ch1,
                         collider2: ch2,
-                        rigid_body1: Some(body_handles[records[p.a as usize].body as usize]),
-                        rigid_body2: Some(body_handles[records[p.b as usize].body as usize]),
+                        rigid_body1: co1.parent(),
+                        rigid_body2: co2.parent(),
                     };
                     let active_hooks = co1.active_hooks() | co2.active_hooks();
                     if co1.is_sensor() || co2.is_sensor() {

@@ -1,5 +1,6 @@
 //! The pass's broad phase: the pairs of colliders of two moving bodies, one of them fast, whose
-//! swept boxes overlap ([`Broad::pairs`]).
+//! swept boxes overlap ([`Broad::pairs`]); a still target (`PassBody::still`) only with a fast
+//! body that turns past the pass's turn (`PassBody::turning`).
 //!
 //! The fast colliders (those of fast bodies) are sorted by the lower x of their swept boxes;
 //! a sweep over that order gives the fast–fast pairs (sort and sweep), and each other moving
@@ -19,7 +20,8 @@ pub struct Broad {
 
 impl Broad {
     /// Writes to `out` (cleared first) the pairs of `colliders` of two different `bodies`, one
-    /// of them fast, whose swept boxes overlap, sorted by (a, b).
+    /// of them fast, whose swept boxes overlap, sorted by (a, b); a pair with a still target
+    /// only when its fast body turns.
     pub fn pairs(&mut self, bodies: &[PassBody], colliders: &[PassCollider], out: &mut Vec<PassPair>) {
         out.clear();
         let fast_of = |c: &PassCollider| bodies[c.body as usize].fast;
@@ -64,7 +66,8 @@ impl Broad {
                 if ci.min.x < co.min.x - widest {
                     break;
                 }
-                if ci.body != co.body && ci.overlaps(co) {
+                let allowed = !bodies[co.body as usize].still || bodies[ci.body as usize].turning;
+                if ci.body != co.body && allowed && ci.overlaps(co) {
                     out.push(PassPair::new(i, o as u32));
                 }
             }
@@ -96,7 +99,12 @@ mod tests {
                     let start = Pose::translation(rng.range(-10.0, 10.0), rng.range(-10.0, 10.0));
                     let end = Pose::translation(rng.range(-10.0, 10.0), rng.range(-10.0, 10.0));
                     let path = StepPath::new(&start, &end, Vector::ZERO, Vector::ZERO, 0.0, dt).unwrap();
-                    PassBody::new(path, rng.range(0.0, 1.0) < 0.3, true, 1.0)
+                    let mut b = PassBody::new(path, rng.range(0.0, 1.0) < 0.3, true, 1.0);
+                    b.turning = b.fast && rng.range(0.0, 1.0) < 0.5;
+                    if !b.fast && rng.range(0.0, 1.0) < 0.3 {
+                        b = PassBody::target(&start, dt);
+                    }
+                    b
                 })
                 .collect();
             let colliders: Vec<PassCollider> = (0..2 * n)
@@ -110,8 +118,10 @@ mod tests {
             for i in 0..colliders.len() {
                 for j in i + 1..colliders.len() {
                     let (ci, cj) = (&colliders[i], &colliders[j]);
-                    let fast = bodies[ci.body as usize].fast || bodies[cj.body as usize].fast;
-                    if fast && ci.body != cj.body && ci.overlaps(cj) {
+                    let (bi, bj) = (&bodies[ci.body as usize], &bodies[cj.body as usize]);
+                    let fast = bi.fast || bj.fast;
+                    let allowed = (bi.turning || !bj.still) && (bj.turning || !bi.still);
+                    if fast && allowed && ci.body != cj.body && ci.overlaps(cj) {
                         brute.push(PassPair::new(i as u32, j as u32));
                     }
                 }

@@ -43,7 +43,7 @@ pub mod core {
     pub use super::path::{may_be_fast, StepPath};
     pub use super::records::{PassBody, PassCollider, PassPair};
     pub use super::schedule::{sensor_crossing, CastOutcome, PairCast, Schedule};
-    pub use parry2d_f64::math::Pose;
+    pub use parry2d_f64::math::{Pose, Vector};
     pub use parry2d_f64::query::NonlinearRigidMotion;
 }
 

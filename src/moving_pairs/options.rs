@@ -24,6 +24,8 @@ pub enum PairScope {
 /// let o = MovingPairsOptions::default();
 /// assert_eq!(o.scope, PairScope::Bullets);
 /// assert_eq!(o.fast_fraction, 0.5);
+/// assert!(o.fixed_targets);
+/// assert_eq!(o.fast_turn, core::f64::consts::FRAC_PI_4);
 /// let every_fast_body = MovingPairsOptions { scope: PairScope::FastBodies, ..o };
 /// # let _ = every_fast_body;
 /// ```
@@ -39,6 +41,32 @@ pub struct MovingPairsOptions {
     /// (`RigidBodyCcd::FAST_BODY_SAFETY_FACTOR`, there on |sin Δθ|·R). 0 makes every moving
     /// body of the scope fast.
     pub fast_fraction: f64,
+    /// Whether a fast body that turns by more than [`MovingPairsOptions::fast_turn`] within
+    /// the step (its angular velocity times the step, or its path's turn: rapier may have
+    /// clamped a body spinning at 2,200 rad/s to a twentieth of its step and half a radian) is
+    /// also checked against the geometry rapier's CCD holds still: colliders of no
+    /// body or of a fixed body, and colliders of bodies asleep. Default `true`.
+    ///
+    /// rapier sweeps a fast body against those itself, on the path it clamps a body on: the
+    /// rotation *nlerped* the short way between the step's two end rotations, which is the
+    /// body's path only for small turns (rapier caps a body's turn at π/4 a step unless
+    /// `allow_fast_rotation` lifts the cap, and its solver notes that a turn of π/2 a step breaks
+    /// its CCD). A body spun past that (a parry cuboid at 2,470 rad/s turns 41 rad a step) is
+    /// clamped at a pose of a path it never follows, a pose that can be inside the wall with its
+    /// contact points leaving it, so the solver pushes nothing and the body crosses the wall at a
+    /// later step. With this option the pass checks such a body against those targets with the
+    /// crate's exact time of impact on its own path (the constant spin it integrated) and stops
+    /// it at its first contact there, as it stops a pair of moving bodies. It acts only on
+    /// bodies past the turn, which rapier's cap never lets exist: a scene without
+    /// `allow_fast_rotation` costs nothing more.
+    pub fixed_targets: bool,
+    /// The turn (radians: the larger of |ω|·dt and its path's |Δθ|) past which a fast body is
+    /// checked against still targets ([`MovingPairsOptions::fixed_targets`]). Default π/4,
+    /// rapier's own per-step rotation cap (`MAX_ROTATION` of rapier's solver): the turn rapier's
+    /// CCD is built for; past it the nlerped path drifts from the body's (by any amount past
+    /// π/2, the other way round past π). 0 checks every fast body that turns at all; a NaN
+    /// or +∞ checks none (as `fixed_targets: false`).
+    pub fast_turn: f64,
 }
 
 impl Default for MovingPairsOptions {
@@ -46,6 +74,8 @@ impl Default for MovingPairsOptions {
         MovingPairsOptions {
             scope: PairScope::Bullets,
             fast_fraction: 0.5,
+            fixed_targets: true,
+            fast_turn: core::f64::consts::FRAC_PI_4,
         }
     }
 }

@@ -19,6 +19,12 @@ pub struct PassBody {
     pub stop: f64,
     /// The largest distance of a point of its colliders from its centre of mass.
     pub reach: f64,
+    /// Whether it is a fast body that turns past the pass's `fast_turn`: it is also checked
+    /// against the still targets.
+    pub turning: bool,
+    /// Whether it is a still target (a collider of fixed geometry or of a body asleep, held
+    /// at its pose): paired only with a turning body.
+    pub still: bool,
 }
 
 impl PassBody {
@@ -30,6 +36,16 @@ impl PassBody {
             stoppable,
             stop: path.dt,
             reach,
+            turning: false,
+            still: false,
+        }
+    }
+
+    /// A still target at `pose` over a step of `dt` (never fast, never stopped).
+    pub fn target(pose: &Pose, dt: f64) -> Self {
+        PassBody {
+            still: true,
+            ..PassBody::new(StepPath::still(pose, dt), false, false, 0.0)
         }
     }
 
@@ -96,6 +112,18 @@ impl PassCollider {
             min: c0.min(c1) - r,
             max: c0.max(c1) + r,
             sensor,
+        }
+    }
+
+    /// The collider of the still target `index` whose box is [`min`, `max`] (its pose is its
+    /// body's: `local` is the identity).
+    pub fn target(index: u32, min: Vector, max: Vector) -> Self {
+        PassCollider {
+            body: index,
+            local: Pose::IDENTITY,
+            min,
+            max,
+            sensor: false,
         }
     }
 

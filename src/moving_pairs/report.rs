@@ -25,6 +25,9 @@ pub struct MovingPairsReport {
     pub moving_bodies: usize,
     /// Moving bodies that are fast bodies of the scope.
     pub fast_bodies: usize,
+    /// Fast bodies that turned past `MovingPairsOptions::fast_turn` (checked against the still
+    /// targets too, with `MovingPairsOptions::fixed_targets`).
+    pub turning_bodies: usize,
     /// Bodies left out: a non-finite pose or velocity, or a path whose velocities overflow.
     pub refused_bodies: usize,
     /// Collider pairs whose swept boxes overlap, after the groups and hooks (solid and sensor).

@@ -325,7 +325,13 @@ pub const BOX_SEED: u64 = 0xB0C5_2030;
 /// The box's bodies: a 10 × 5 grid, every family in turn, scales 0.6–1.2, speeds 50–250 m/s
 /// in every direction, spins to ±300 rad/s, all bullets.
 pub fn box_launches() -> Vec<Launch> {
-    let mut rng = Rng::new(BOX_SEED);
+    box_launches_seeded(BOX_SEED)
+}
+
+/// [`box_launches`] drawn from the random sequence of `seed` (the example's `--seed=N`: the
+/// same box with other launches).
+pub fn box_launches_seeded(seed: u64) -> Vec<Launch> {
+    let mut rng = Rng::new(seed);
     (0..BOX_BODIES)
         .map(|i| {
             let (col, row) = ((i % 10) as f64, (i / 10) as f64);
@@ -380,18 +386,19 @@ pub fn run_box_with(
     hooks: impl Into<Hooks>,
     setup: &dyn Fn(&mut super::world::World),
 ) -> BoxResult {
-    let mut run = Run::new(&box_launches(), 0.0, options);
+    run_box_seeded(BOX_SEED, steps, options, hooks, setup)
+}
+
+/// [`run_box_with`] on the launches of `seed` ([`box_launches_seeded`]).
+pub fn run_box_seeded(
+    seed: u64,
+    steps: usize,
+    options: Option<MovingPairsOptions>,
+    hooks: impl Into<Hooks>,
+    setup: &dyn Fn(&mut super::world::World),
+) -> BoxResult {
+    let mut run = box_run(seed, options, hooks.into());
     setup(&mut run.world);
-    let (w, h, t) = (BOX_WALL_HALF, BOX_HALF + BOX_WALL_HALF, BOX_HALF + 2.0 * BOX_WALL_HALF);
-    for (at, half) in [
-        (Vector::new(0.0, -h), Vector::new(t, w)),
-        (Vector::new(0.0, h), Vector::new(t, w)),
-        (Vector::new(-h, 0.0), Vector::new(w, t)),
-        (Vector::new(h, 0.0), Vector::new(w, t)),
-    ] {
-        run.wall(at, half, 0.0);
-    }
-    run = run.with_hooks(hooks.into());
     let e0 = run.energy();
     let mut judge = Judge::new(&run);
     let mut out = vec![false; run.bodies.len()];
@@ -424,6 +431,21 @@ pub fn run_box_with(
         hash: state_hash(&run.world, &handles).0,
         energy_ratio: run.energy() / e0,
     }
+}
+
+/// The box's world before its first step: the launches of `seed`, the four walls, `hooks`.
+pub fn box_run(seed: u64, options: Option<MovingPairsOptions>, hooks: Hooks) -> Run {
+    let mut run = Run::new(&box_launches_seeded(seed), 0.0, options);
+    let (w, h, t) = (BOX_WALL_HALF, BOX_HALF + BOX_WALL_HALF, BOX_HALF + 2.0 * BOX_WALL_HALF);
+    for (at, half) in [
+        (Vector::new(0.0, -h), Vector::new(t, w)),
+        (Vector::new(0.0, h), Vector::new(t, w)),
+        (Vector::new(-h, 0.0), Vector::new(w, t)),
+        (Vector::new(h, 0.0), Vector::new(w, t)),
+    ] {
+        run.wall(at, half, 0.0);
+    }
+    run.with_hooks(hooks)
 }
 
 /// The pass's options in the scenes: every pair with a fast bullet (the default).
