@@ -14,7 +14,8 @@
 //!
 //! Run with `cargo bench --bench ratios` (all sections, a few minutes on two cores), or name
 //! sections: `cargo bench --bench ratios -- classes distance manifolds parry-pairs sweep growth
-//! pile rapier-casts corner` (`corner`: the degenerate starts of `tests/degenerate_starts.rs`, a
+//! pile rapier-casts cast-calls corner` (`cast-calls`: this crate's casts of `rapier-casts` alone, for
+//! an instruction counter; `corner`: the degenerate starts of `tests/degenerate_starts.rs`, a
 //! disc centred on a box's corner and its neighbours, with their evaluation counts)
 //! (`classes` runs `classes-native` too; `native` alone runs only it).
 //!
@@ -773,6 +774,9 @@ fn main() {
     }
     if want("rapier-casts") {
         support::rapier_casts::table();
+    }
+    if want("cast-calls") {
+        support::rapier_casts::calls();
     }
     if want("pile") {
         support::pile_tables::pile_table();

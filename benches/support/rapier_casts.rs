@@ -1021,3 +1021,48 @@ fn print_row(label: &str, set: Set, rows: &[&Row]) {
         sci(worst(&pv)),
     );
 }
+
+/// rapier's casts of this crate's shapes only, for an instruction counter
+/// (`cargo bench --bench ratios -- cast-calls` under `valgrind --tool=callgrind
+/// --toggle-collect='*cast_shapes_nonlinear*'`): every case of the sets and body kinds that
+/// `RAPIER_CASTS_SET` (`apart`, `beyond`, `contact`) and `RAPIER_CASTS_BODY` (`disc`, `polygon`,
+/// `rounded`, `sliver`, `ellipse`) name (all when unset), cast `RAPIER_CASTS_PASSES` times (4),
+/// no timing and no reference; prints the casts made, the hits and a digest of the answers' bits.
+pub fn calls() {
+    let d = SmoothDispatcher::default();
+    let pick = |var: &str, name: &str| std::env::var(var).map_or(true, |v| name.starts_with(v.as_str()));
+    let passes: usize = std::env::var("RAPIER_CASTS_PASSES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(4);
+    let mut all = Vec::new();
+    for set in Set::ALL {
+        let set_name = match set {
+            Set::Apart => "apart",
+            Set::Beyond => "beyond",
+            Set::Contact => "contact",
+        };
+        for body in Body::ALL {
+            if !(pick("RAPIER_CASTS_SET", set_name) && pick("RAPIER_CASTS_BODY", body.name())) {
+                continue;
+            }
+            for target in Target::ALL {
+                let seeds: Vec<u64> = (0..cases()).map(|i| seed(body, target, set, i)).collect();
+                all.extend(par_map(&seeds, |&s| make_case(body, target, set, s)));
+            }
+        }
+    }
+    let (mut hits, mut digest) = (0usize, 0xCBF2_9CE4_8422_2325u64);
+    for _ in 0..passes {
+        for c in &all {
+            let a = std::hint::black_box(ours_cast(c, &d));
+            hits += usize::from(a.is_some());
+            digest = (digest ^ a.map_or(u64::MAX, f64::to_bits)).wrapping_mul(0x0100_0000_01B3);
+        }
+    }
+    println!(
+        "cast-calls: {} cases × {passes} passes, {} hits a pass, answers' digest {digest:016x}",
+        all.len(),
+        hits / passes.max(1)
+    );
+}

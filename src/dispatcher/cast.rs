@@ -18,7 +18,7 @@ use super::SmoothDispatcher;
 use crate::error::QueryError;
 use crate::numerics::math::{Pose, Real};
 use crate::numerics::motion::motion_is_finite;
-use crate::query::advance::{advance_time_of_impact, Advance};
+use crate::query::advance::{advance_time_of_impact, certified_miss, Advance};
 use crate::query::contact::Contact;
 use crate::query::contact::SupportShape;
 use crate::query::gap::{gap_distance, gap_time_of_impact, gap_time_to_level};
@@ -396,7 +396,8 @@ impl SmoothDispatcher {
 }
 
 /// rapier's casts of the shapes the contact query reads, one of them this crate's, without
-/// routing them to the trackers: the exact contact at the start; the pair out of reach; a
+/// routing them to the trackers: a miss the bounds over the whole window certify
+/// (`query::advance::swept`); the exact contact at the start; the pair out of reach; a
 /// contact at the start by rapier's rule; apart, the separating-axis advancement
 /// (`query::advance`). `None` where the trackers answer (another pair, non-finite input, an
 /// advancement declined, a contact at the start with `stop_at_penetration`).
@@ -418,7 +419,21 @@ fn rapier_fast_path(
     if gap.is_finite() && out_of_reach(c, gap, opts.target_distance) {
         return Some(Ok(None));
     }
-    let k0 = exact_contact_of(s1, s2, &pos12_at(c.m1, c.m2, c.t0), None)?;
+    // Bounds over the whole window along a few axes, before any contact query: a pair they
+    // keep apart is no impact and no contact at the start (`query::advance::swept`).
+    // Tried only where the spheres are apart at the start (shapes in contact there, rapier's
+    // other common cast, never pay for it), and where the contact query would take the pair
+    // (the same guards), so that input it refuses keeps its answer.
+    let pos12 = pos12_at(c.m1, c.m2, c.t0);
+    let path = || OnPath::new(c.m1, c.m2, c.t0, c.t1, opts.path).ok();
+    let try_miss = gap > 0.0 && input_guard::pose_ok(&pos12) && centres_ok(c);
+    let on = if try_miss { path() } else { None };
+    if let Some(on) = &on {
+        if certified_miss(s1, s2, on, c.t0, c.t1, miss_level(c, opts)) {
+            return Some(Ok(None));
+        }
+    }
+    let k0 = exact_contact_of(s1, s2, &pos12, None)?;
     let d0 = k0.dist;
     if out_of_reach(c, d0, opts.target_distance) {
         return Some(Ok(None));
@@ -430,7 +445,43 @@ fn rapier_fast_path(
             })
         });
     }
-    advanced(c, s1, s2, opts, Some(k0))
+    advanced(c, &on.or_else(path)?, s1, s2, opts, Some(k0))
+}
+
+/// Whether both motions start at poses parry can use ([`input_guard::pose_ok`]: a unit rotation
+/// among them) with rotation centres within its coordinate range
+/// ([`input_guard::PARRY_MAX_COORDINATE`]): otherwise the certified miss is not tried and the
+/// routes answer such input as they always have.
+fn centres_ok(c: &NonlinearCast) -> bool {
+    let ok = |m: &NonlinearRigidMotion| {
+        input_guard::pose_ok(&m.start) && m.local_center.abs().max_element() <= input_guard::PARRY_MAX_COORDINATE
+    };
+    ok(c.m1) && ok(c.m2)
+}
+
+/// Relative rounding allowed to the certified miss's bounds, of the pair's size plus the
+/// bodies' travel over the window.
+const MISS_ROUNDING: Real = 1e-9;
+
+/// The level a certified miss must keep the pair above for every path to answer no impact: the
+/// target distance, twice the advancement's tolerance ([`advance_tolerance`]) — no contact the
+/// advancement or the trackers would take as a graze —, the start-contact gap of rapier's rule
+/// and [`MISS_ROUNDING`] of the pair's size and travel.
+fn miss_level(c: &NonlinearCast, opts: &ToiOptions) -> Real {
+    let window = c.t1 - c.t0;
+    let travel = (c.m1.linvel.length() + c.m2.linvel.length()) * window;
+    let size = c.size();
+    opts.target_distance
+        + 2.0 * advance_tolerance(c, opts)
+        + crate::CastPolicy::START_CONTACT_GAP * size
+        + MISS_ROUNDING * (size + travel)
+}
+
+/// The advancement's distance tolerance: `distance_tolerance` of the size s, the larger bounding
+/// radius about the shapes' local origins.
+fn advance_tolerance(c: &NonlinearCast, opts: &ToiOptions) -> Real {
+    let radius = |b: &BoundingSphere| b.radius + b.center.length();
+    opts.distance_tolerance * radius(&c.spheres[0]).max(radius(&c.spheres[1]))
 }
 
 /// A lower bound of the signed distance of the cast's shapes at its start: every point of a body
@@ -488,21 +539,19 @@ fn level_by_route(
     }
 }
 
-/// The separating-axis advancement (`query::advance`) of a cast whose shapes (`s1`, `s2`, as the
+/// The separating-axis advancement (`query::advance`) on the path `on` of a cast whose shapes (`s1`, `s2`, as the
 /// contact query reads them) are apart at its start, `first` their contact there; `None` where
 /// it declines (the trackers answer then).
 fn advanced(
     c: &NonlinearCast,
+    on: &OnPath,
     s1: SupportShape,
     s2: SupportShape,
     opts: &ToiOptions,
     first: Option<Contact>,
 ) -> Option<Result<Option<ShapeCastHit>, Unsupported>> {
-    let on = OnPath::new(c.m1, c.m2, c.t0, c.t1, opts.path).ok()?;
-    // The size s of the tolerances: the larger bounding radius about the local origins.
-    let radius = |b: &BoundingSphere| b.radius + b.center.length();
-    let tol = opts.distance_tolerance * radius(&c.spheres[0]).max(radius(&c.spheres[1]));
-    match advance_time_of_impact(s1, s2, c.g1, c.g2, &on, c.t0, c.t1, opts.target_distance, tol, first) {
+    let tol = advance_tolerance(c, opts);
+    match advance_time_of_impact(s1, s2, c.g1, c.g2, on, c.t0, c.t1, opts.target_distance, tol, first) {
         Advance::Answer(t) => Some(toi_to_parry(Ok(Some(t)))),
         Advance::Declined => None,
     }

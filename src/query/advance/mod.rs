@@ -49,6 +49,9 @@
 use crate::numerics::clock::Clock;
 use crate::numerics::math::{perp, sin_cos, Pose, Real, Vector};
 mod face_axis;
+mod swept;
+
+pub(crate) use swept::certified_miss;
 
 use crate::query::contact::{contact, Contact, SupportShape};
 use crate::query::path::OnPath;
