@@ -623,13 +623,8 @@ mod tests {
             Box::new(Cuboid::new(Vector::new(0.6, 0.25))),
             Box::new(Ball::new(0.3)),
         ];
-        let mut state = 0x2545_F491_4F6C_DD1Du64;
-        let mut uniform = |lo: f64, hi: f64| {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            lo + (hi - lo) * (state >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rng = crate::numerics::test_rng::Lcg(0x2545_F491_4F6C_DD1Du64);
+        let mut uniform = |lo: f64, hi: f64| rng.range(lo, hi);
         let (mut compared, mut routes) = (0, std::collections::BTreeSet::new());
         for g1 in &shapes {
             for g2 in &shapes {

@@ -248,13 +248,8 @@ mod tests {
             },
             SupportShape::Disc(0.4),
         ];
-        let mut state = 0x9E37_79B9_7F4A_7C15u64;
-        let mut uniform = |lo: Real, hi: Real| {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            lo + (hi - lo) * (state >> 11) as Real / (1u64 << 53) as Real
-        };
+        let mut rng = crate::numerics::test_rng::Lcg(0x9E37_79B9_7F4A_7C15u64);
+        let mut uniform = |lo: Real, hi: Real| rng.range(lo, hi);
         let (level, mut certified, mut cases) = (1e-3, 0, 0);
         for &sa in &targets {
             for &sb in &bodies {
