@@ -9,7 +9,10 @@
 //!
 //! Run: `cargo run --release --example ccd_scenes` (optionally a family name, dashes for spaces,
 //! to run only it, `--no-recycling` to run with rapier's contact recycling off, and
-//! `--recycle-distance=D` to set rapier's `normalized_contact_recycle_distance`, 0.05 by default).
+//! `--recycle-distance=D` to set rapier's `normalized_contact_recycle_distance`, 0.05 by default,
+//! and `--ccd-hooks` to give the launched CCD bodies' colliders
+//! `ActiveHooks::MODIFY_SOLVER_CONTACTS` with no-op hooks, so that rapier never recycles their
+//! pairs).
 
 #[path = "common/mod.rs"]
 mod common;
@@ -26,6 +29,8 @@ fn main() {
         .iter()
         .find_map(|a| a.strip_prefix("--recycle-distance="))
         .map(|d| d.parse::<f64>().expect("--recycle-distance=D, D a number"));
+    // `--ccd-hooks`: the CCD bodies' colliders with active (no-op) hooks, never recycled.
+    let ccd_hooks = args.iter().any(|a| a == "--ccd-hooks");
     let filter = args.iter().find(|a| !a.starts_with("--"));
     let cases: Vec<_> = all_cases()
         .into_iter()
@@ -33,19 +38,25 @@ fn main() {
         .map(|c| common::ccd_scenes::Case {
             recycling,
             recycle_distance,
+            ccd_hooks,
             ..c
         })
         .collect();
     let t = std::time::Instant::now();
     let outcomes = run_all(&cases);
     println!(
-        "CCD scene suite: {} cases, dt = 1/60 s; rapier's caps lifted in {} of them (speed > 400 m/s or spin > 47 rad/s); contact recycling {}",
+        "CCD scene suite: {} cases, dt = 1/60 s; rapier's caps lifted in {} of them (speed > 400 m/s or spin > 47 rad/s); contact recycling {}{}",
         cases.len(),
         cases.iter().filter(|c| c.lifted()).count(),
         match (recycling, recycle_distance) {
             (false, _) => "off".to_string(),
             (true, None) => "on (rapier's default)".to_string(),
             (true, Some(d)) => format!("on, recycle distance {d}"),
+        },
+        if ccd_hooks {
+            "; the CCD bodies' colliders with active hooks (their pairs never recycled)"
+        } else {
+            ""
         }
     );
     print!("{}", table(&cases, &outcomes));
