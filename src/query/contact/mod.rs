@@ -48,6 +48,15 @@
 //! answer. The merge needs each polygon's edge normals to turn strictly (a vertex on a straight
 //! edge, which parry's unmodified polylines keep, makes [`contact`] answer `None`).
 //!
+//! # Two polygons
+//!
+//! A pair of polygons (dilated or not: this crate's rounded polygons, parry's boxes, triangles,
+//! convex polygons, segments and capsules), or a polygon and a disc, has vertex pieces only: its
+//! walk is the separating-axis tests of both polygons' edges and, on an arc, at most one
+//! corner–corner candidate. [`contact`] answers it by a lean copy of this walk
+//! (`polygons`, the same float operations in the same order: the same answer to the bit, at
+//! a fraction of the cost); every other pair takes the general walk.
+//!
 //! # The manifold's points
 //!
 //! When the minimum is at a breakpoint that is a face of one body (an edge, dilated) and the
@@ -61,6 +70,7 @@
 
 mod arc;
 pub(crate) mod feet;
+mod polygons;
 mod side;
 mod two_ellipses;
 mod walk;
@@ -119,6 +129,20 @@ pub(crate) struct Contact {
 /// `None` when a side has too many breakpoints, both have an ellipse piece, or a value is not
 /// finite.
 pub(crate) fn contact(
+    shape1: SupportShape,
+    shape2: SupportShape,
+    pos12: &Pose,
+    flat_cos: f64,
+    hint: Option<Vector>,
+) -> Option<Contact> {
+    if let Some(answer) = polygons::contact(shape1, shape2, pos12, flat_cos) {
+        return answer;
+    }
+    walk_contact(shape1, shape2, pos12, flat_cos, hint)
+}
+
+/// [`contact`] by the general walk (every pair of shapes, the polygons' too).
+fn walk_contact(
     shape1: SupportShape,
     shape2: SupportShape,
     pos12: &Pose,
@@ -214,7 +238,43 @@ fn facing_faces(walk: &Walk, i: usize, m: &Minimum, flat_cos: f64) -> Option<[Co
     let (a1, _) = reference.vertex(e.index())?;
     let (b0, r_inc) = other.vertex(other.before(k))?;
     let (b1, _) = other.vertex(k)?;
-    let other_face = other.face(k)?;
+    let faces = FacingFaces {
+        rs,
+        a: [a0, a1],
+        r_ref,
+        ref_face,
+        ref_ids: [reference.id(reference.before(e.index())), reference.id(e.index())],
+        b: [b0, b1],
+        r_inc,
+        other_face: other.face(k)?,
+        inc_ids: [other.id(other.before(k)), other.id(k)],
+    };
+    clip_faces(&faces, m)
+}
+
+/// Two faces facing each other within the flat-feature angle: the reference face a₀a₁ (radius
+/// `r_ref`, face `ref_face`, its vertices' ids) of side `rs`, at the minimum's breakpoint, and
+/// the incident face b₀b₁ (radius `r_inc`) of the other side, in body 1's frame.
+pub(super) struct FacingFaces {
+    pub rs: usize,
+    pub a: [Vector; 2],
+    pub r_ref: f64,
+    pub ref_face: u32,
+    pub ref_ids: [u32; 2],
+    pub b: [Vector; 2],
+    pub r_inc: f64,
+    pub other_face: u32,
+    pub inc_ids: [u32; 2],
+}
+
+/// The manifold's two points of facing faces (see the module docs): the incident face clipped
+/// to the slab of the reference face, each point with its distance along the normal; `None`
+/// when the clip leaves one point or drops the minimum's witness.
+pub(super) fn clip_faces(f: &FacingFaces, m: &Minimum) -> Option<[ContactPoint; 2]> {
+    let (rs, os) = (f.rs, 1 - f.rs);
+    let ([a0, a1], [b0, b1]) = (f.a, f.b);
+    let (r_ref, r_inc, ref_face, other_face) = (f.r_ref, f.r_inc, f.ref_face, f.other_face);
+    let (ref_ids, inc_ids) = (f.ref_ids, f.inc_ids);
     // The reference face's outward normal; the slab of the face along its tangent.
     let n_ref = if rs == 0 { m.normal } else { -m.normal };
     let t = perp(n_ref);
@@ -228,8 +288,6 @@ fn facing_faces(walk: &Walk, i: usize, m: &Minimum, flat_cos: f64) -> Option<[Co
     // either face: the point's features are that vertex and the other body's face, whichever
     // body is the reference (so a reference that flips between two parallel faces keeps the
     // ids, and rapier's warm start).
-    let ref_ids = [reference.id(reference.before(e.index())), reference.id(e.index())];
-    let inc_ids = [other.id(other.before(k)), other.id(k)];
     // An incident end within this distance (along the face) of a reference end is the same end
     // of the overlap, which is then attributed to body 2's vertex whichever body is the
     // reference (two faces of equal extent, a box on a box, keep their ids when the reference

@@ -89,7 +89,7 @@ impl Axes {
 /// three edges), or are opposite (a segment's two). The merge of the walk relies on it: a vertex
 /// on a straight edge (two equal normals, which parry's unmodified polylines keep) would put a
 /// breakpoint out of order.
-fn turning(normals: &[Vector]) -> bool {
+pub(super) fn turning(normals: &[Vector]) -> bool {
     let n = normals.len();
     if n == 2 {
         return normals[0].dot(normals[1]) < 0.0 && crate::numerics::math::cross(normals[0], normals[1]).abs() <= 1e-12;

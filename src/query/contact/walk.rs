@@ -55,18 +55,18 @@ pub(crate) struct Minimum {
 /// Breakpoint values within this fraction of the largest |F| at a breakpoint of the best one
 /// count as ties for the separated shortcut of [`Walk::minimum`] (rounding only; the shortcut
 /// then looks at a few more arcs, never fewer).
-const TIE: f64 = 1e-9;
+pub(super) const TIE: f64 = 1e-9;
 
 /// Which half-turn from `s` the unit direction `n` lies in (0: [0, π), 1: [π, 2π)).
 #[inline]
-fn half(s: Vector, n: Vector) -> u8 {
+pub(super) fn half(s: Vector, n: Vector) -> u8 {
     let c = cross(s, n);
     u8::from(!(c > 0.0 || (c == 0.0 && s.dot(n) > 0.0)))
 }
 
 /// Whether `a` comes before `b` counter-clockwise from `s` (their halves `ha`, `hb`).
 #[inline]
-fn before(ha: u8, a: Vector, hb: u8, b: Vector) -> bool {
+pub(super) fn before(ha: u8, a: Vector, hb: u8, b: Vector) -> bool {
     ha < hb || (ha == hb && cross(a, b) > 0.0)
 }
 
