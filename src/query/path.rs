@@ -64,8 +64,19 @@ pub(crate) struct OnPath {
 /// start pose, t from 0, not from the window's start).
 fn respun(m: &NonlinearRigidMotion, omega: f64, t0: f64) -> NonlinearRigidMotion {
     use parry2d_f64::math::Pose;
+    let angle = (m.angvel - omega) * t0;
+    // No turn (a window from t = 0): the pose is its own, without the sine and cosine of 0 —
+    // the same bits as the composition below, which gives back every finite component but a
+    // negative zero (+0 instead).
+    let s = &m.start;
+    let kept = [s.translation.x, s.translation.y, s.rotation.re, s.rotation.im]
+        .iter()
+        .all(|v| v.is_finite() && v.to_bits() != (-0.0f64).to_bits());
+    if angle == 0.0 && kept {
+        return NonlinearRigidMotion { angvel: omega, ..*m };
+    }
     let centre = Pose::from_translation(m.start * m.local_center);
-    let turn = Pose::new(parry2d_f64::math::Vector::ZERO, (m.angvel - omega) * t0);
+    let turn = Pose::new(parry2d_f64::math::Vector::ZERO, angle);
     NonlinearRigidMotion {
         start: centre * turn * centre.inverse() * m.start,
         angvel: omega,
