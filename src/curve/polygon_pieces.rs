@@ -236,15 +236,11 @@ impl<'a> PolygonPieces<'a> {
     pub fn support_point(&self, m: Vector) -> Vector {
         let m = m.normalize_or(Vector::X);
         let best = if self.vertices.len() <= SCAN_UP_TO {
-            // `max_by` on the dots, each taken once: the last of the greatest in `total_cmp`.
-            let mut best = (Vector::ZERO, f64::NAN);
-            for (i, &v) in self.vertices.iter().enumerate() {
-                let d = v.dot(m);
-                if i == 0 || d.total_cmp(&best.1).is_ge() {
-                    best = (v, d);
-                }
-            }
-            best.0
+            self.vertices
+                .iter()
+                .copied()
+                .max_by(|a, b| a.dot(m).total_cmp(&b.dot(m)))
+                .unwrap_or(Vector::ZERO)
         } else {
             self.support_windowed(m)
         };

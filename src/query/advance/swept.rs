@@ -145,10 +145,24 @@ pub(crate) fn certified_miss(
     };
     // L(n) > level along `n` (module docs).
     let apart = |n: Vector| -> bool {
+        let reach = n.dot(sweep.xa).min(n.dot(sweep.xb));
+        // A polygon's first vertex first: h_A(n) ≥ v₀·n + r (to the bit: the largest dot is at
+        // least v₀'s, and the rounded sums and differences are monotone), so where the part
+        // below is not above the level neither is the one with h_A(n).
+        if let SupportShape::Polygon {
+            vertices: [v0, ..],
+            radius,
+            ..
+        } = sa
+        {
+            if reach - (v0.dot(n) + radius) - level <= 0.0 {
+                return false;
+            }
+        }
         let Some(h) = support(sa, n) else { return false };
         // The translation's and A's part first: B's part is at most 0 about a centre inside B,
         // so an axis where this part is not above the level is not worth B's bound.
-        let base = n.dot(sweep.xa).min(n.dot(sweep.xb)) - h - level;
+        let base = reach - h - level;
         if base.is_nan() || base <= 0.0 {
             return false;
         }
