@@ -18,7 +18,7 @@ use super::SmoothDispatcher;
 use crate::error::QueryError;
 use crate::numerics::math::{Pose, Real};
 use crate::numerics::motion::motion_is_finite;
-use crate::query::advance::{advance_time_of_impact, certified_miss, Advance};
+use crate::query::advance::{advance_time_of_impact, certified_miss, Advance, PairOnPath};
 use crate::query::contact::Contact;
 use crate::query::contact::SupportShape;
 use crate::query::gap::{gap_distance, gap_time_of_impact, gap_time_to_level};
@@ -425,11 +425,13 @@ fn rapier_fast_path(
     // other common cast, never pay for it), and where the contact query would take the pair
     // (the same guards), so that input it refuses keeps its answer.
     let pos12 = pos12_at(c.m1, c.m2, c.t0);
-    let path = || OnPath::new(c.m1, c.m2, c.t0, c.t1, opts.path).ok();
+    // The pair on its path (B's kinematics in A's frame), computed once for the certified miss
+    // and the advancement; `None` where the advancement declines (both bodies turn).
+    let pair = || PairOnPath::of(&OnPath::new(c.m1, c.m2, c.t0, c.t1, opts.path).ok()?);
     let try_miss = gap > 0.0 && input_guard::pose_ok(&pos12) && centres_ok(c);
-    let on = if try_miss { path() } else { None };
-    if let Some(on) = &on {
-        if certified_miss(s1, s2, on, c.t0, c.t1, miss_level(c, opts)) {
+    let frame = if try_miss { pair() } else { None };
+    if let Some(f) = &frame {
+        if certified_miss(s1, s2, f, c.t0, c.t1, miss_level(c, opts)) {
             return Some(Ok(None));
         }
     }
@@ -445,7 +447,7 @@ fn rapier_fast_path(
             })
         });
     }
-    advanced(c, &on.or_else(path)?, s1, s2, opts, Some(k0))
+    advanced(c, &frame.or_else(pair)?, s1, s2, opts, Some(k0))
 }
 
 /// Whether both motions start at poses parry can use ([`input_guard::pose_ok`]: a unit rotation
@@ -539,19 +541,19 @@ fn level_by_route(
     }
 }
 
-/// The separating-axis advancement (`query::advance`) on the path `on` of a cast whose shapes (`s1`, `s2`, as the
-/// contact query reads them) are apart at its start, `first` their contact there; `None` where
-/// it declines (the trackers answer then).
+/// The separating-axis advancement (`query::advance`) of a cast whose shapes (`s1`, `s2`, as the
+/// contact query reads them) are apart at its start, moving as `pair` says, `first` their
+/// contact there; `None` where it declines (the trackers answer then).
 fn advanced(
     c: &NonlinearCast,
-    on: &OnPath,
+    pair: &PairOnPath,
     s1: SupportShape,
     s2: SupportShape,
     opts: &ToiOptions,
     first: Option<Contact>,
 ) -> Option<Result<Option<ShapeCastHit>, Unsupported>> {
     let tol = advance_tolerance(c, opts);
-    match advance_time_of_impact(s1, s2, c.g1, c.g2, on, c.t0, c.t1, opts.target_distance, tol, first) {
+    match advance_time_of_impact(s1, s2, c.g1, c.g2, pair, c.t0, c.t1, opts.target_distance, tol, first) {
         Advance::Answer(t) => Some(toi_to_parry(Ok(Some(t)))),
         Advance::Declined => None,
     }

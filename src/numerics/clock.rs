@@ -51,6 +51,17 @@ pub(crate) struct Clock {
     /// Δ/2 and k = tan(Δ/2).
     half: f64,
     k: f64,
+    /// The constants of [`Clock::clock_of_path_bounds`], computed once a clock as it computed
+    /// them every call: |k/h|, the peak x = 1/(√3·|k|) of x/(1 + x²k²)² and its value there.
+    kh: f64,
+    peak: f64,
+    peak_g: f64,
+}
+
+/// x/(1 + x²k²)², the shape of |d²u/dτ²| in x ([`Clock::clock_of_path_bounds`]; `k` ≥ 0).
+#[inline]
+fn rate_slope(x: f64, k: f64) -> f64 {
+    x / ((1.0 + x * x * k * k) * (1.0 + x * x * k * k))
 }
 
 /// The clock's value and first two derivatives at one time: τ, τ′ = dτ/dt, τ″.
@@ -89,12 +100,17 @@ impl Clock {
             return None;
         }
         let half = 0.5 * delta;
+        let k = libm::tan(half);
+        let peak = 1.0 / (3.0f64.sqrt() * k.abs());
         Some(Clock {
             t0,
             inv_t: 1.0 / span,
             span,
             half,
-            k: libm::tan(half),
+            k,
+            kh: (k / half).abs(),
+            peak,
+            peak_g: rate_slope(peak, k.abs()),
         })
     }
 
@@ -217,17 +233,18 @@ impl Clock {
     /// |x|/(1 + x²k²)² grows up to |x| = 1/(√3·|k|) and falls after.
     pub(crate) fn clock_of_path_bounds(&self, ta: f64, tb: f64) -> (f64, f64) {
         let x_at = |t: f64| (2.0 * (t - self.t0) * self.inv_t - 1.0).clamp(-1.0, 1.0);
-        let (xa, xb) = (x_at(ta).min(x_at(tb)), x_at(ta).max(x_at(tb)));
+        let (x_ta, x_tb) = (x_at(ta), x_at(tb));
+        let (xa, xb) = (x_ta.min(x_tb), x_ta.max(x_tb));
         let k = self.k.abs();
-        let kh = (self.k / self.half).abs();
+        let kh = self.kh;
         let least = if xa <= 0.0 && xb >= 0.0 {
             0.0
         } else {
             xa.abs().min(xb.abs())
         };
         let d1 = kh / (1.0 + least * least * k * k);
-        let g = |x: f64| x / ((1.0 + x * x * k * k) * (1.0 + x * x * k * k));
-        let peak = 1.0 / (3.0f64.sqrt() * k);
+        let g = |x: f64| rate_slope(x, k);
+        let peak = self.peak;
         let (lo, hi) = if xb <= 0.0 {
             (-xb, -xa)
         } else if xa >= 0.0 {
@@ -236,7 +253,7 @@ impl Clock {
             (0.0, (-xa).max(xb))
         };
         let top = if peak >= lo && peak <= hi {
-            g(peak)
+            self.peak_g
         } else {
             g(lo).max(g(hi))
         };

@@ -63,9 +63,32 @@ pub(crate) struct OnPath {
 /// rotation centre so that it has the same pose at `t0` (parry's motions turn by ω·t from the
 /// start pose, t from 0, not from the window's start).
 fn respun(m: &NonlinearRigidMotion, omega: f64, t0: f64) -> NonlinearRigidMotion {
+    let angle = (m.angvel - omega) * t0;
+    if angle == 0.0 && turn_of_zero_keeps(m) {
+        // No turn (a window from t = 0): the pose is its own, without the sine and cosine of 0.
+        return NonlinearRigidMotion { angvel: omega, ..*m };
+    }
+    turned(m, omega, angle)
+}
+
+/// Whether turning `m`'s start by a zero angle about its rotation centre ([`turned`]) gives its
+/// start back to the bit: the rotation R(0) = (1, 0) and the centre's shift c − c = +0 give back
+/// every finite component but a negative zero (+0 instead); a centre that is not finite gives
+/// NaN.
+fn turn_of_zero_keeps(m: &NonlinearRigidMotion) -> bool {
+    let s = &m.start;
+    let kept = |v: f64| v.is_finite() && v.to_bits() != (-0.0f64).to_bits();
+    [s.translation.x, s.translation.y, s.rotation.re, s.rotation.im]
+        .into_iter()
+        .all(kept)
+        && (m.start * m.local_center).is_finite()
+}
+
+/// `m` with angular velocity `omega`, its start turned by `angle` about its rotation centre.
+fn turned(m: &NonlinearRigidMotion, omega: f64, angle: f64) -> NonlinearRigidMotion {
     use parry2d_f64::math::Pose;
     let centre = Pose::from_translation(m.start * m.local_center);
-    let turn = Pose::new(parry2d_f64::math::Vector::ZERO, (m.angvel - omega) * t0);
+    let turn = Pose::new(parry2d_f64::math::Vector::ZERO, angle);
     NonlinearRigidMotion {
         start: centre * turn * centre.inverse() * m.start,
         angvel: omega,
@@ -143,5 +166,46 @@ impl OnPath {
                 }
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use parry2d_f64::math::{Pose, Vector};
+
+    /// The bits of a motion's start pose.
+    fn bits(m: &NonlinearRigidMotion) -> [u64; 4] {
+        let s = &m.start;
+        [s.translation.x, s.translation.y, s.rotation.re, s.rotation.im].map(f64::to_bits)
+    }
+
+    /// A window from t = 0 turns no motion: the shortcut gives the bits the composition about the
+    /// rotation centre gives, and leaves to it the starts it would change (a negative zero, a
+    /// centre that is not finite).
+    #[test]
+    fn a_zero_turn_keeps_the_start_pose_to_the_bit() {
+        let mut rng = crate::numerics::test_rng::Lcg(0x005E_ED0F_2E50);
+        for _ in 0..2000 {
+            let start = Pose::new(
+                Vector::new(rng.range(-1e3, 1e3), rng.range(-1e3, 1e3)),
+                rng.range(-4.0, 4.0),
+            );
+            let centre = Vector::new(rng.range(-2.0, 2.0), rng.range(-2.0, 2.0));
+            let m = NonlinearRigidMotion::new(start, centre, Vector::new(1.0, -2.0), 3.0);
+            assert!(turn_of_zero_keeps(&m));
+            assert_eq!(bits(&respun(&m, 0.5, 0.0)), bits(&turned(&m, 0.5, 0.0)));
+        }
+        let negative_zero = NonlinearRigidMotion::new(Pose::translation(-0.0, 1.0), Vector::ZERO, Vector::X, 1.0);
+        assert!(!turn_of_zero_keeps(&negative_zero));
+        assert_ne!(bits(&turned(&negative_zero, 0.5, 0.0)), bits(&negative_zero));
+        let far = NonlinearRigidMotion::new(
+            Pose::new(Vector::ZERO, 0.7),
+            Vector::new(1.7e308, 1.7e308),
+            Vector::X,
+            1.0,
+        );
+        assert!(!turn_of_zero_keeps(&far));
+        assert!(!turned(&far, 0.5, 0.0).start.is_finite());
     }
 }

@@ -177,7 +177,41 @@ pub(crate) enum Advance {
     Declined,
 }
 
-/// The time of impact of the shapes `s1` and `s2` moving on the path `on` (the motions and clock
+/// A pair on its path as the advancement and the certified miss read it: which body turns
+/// (B; A the other) and B's kinematics in A's frame, computed once a cast for both.
+pub(crate) struct PairOnPath {
+    /// Whether B is shape 1 (the caller's order is then reversed).
+    b_first: bool,
+    k: Kinematics,
+}
+
+impl PairOnPath {
+    /// The pair moving on the path `on`; `None` when both bodies turn (the method declines).
+    pub(crate) fn of(on: &OnPath) -> Option<PairOnPath> {
+        let (w1, w2) = (on.m1.angvel, on.m2.angvel);
+        if w1 != 0.0 && w2 != 0.0 {
+            return None;
+        }
+        // A: the body that does not turn (shape 2 when neither does).
+        let b_first = w1 != 0.0;
+        let (ma, mb) = if b_first { (&on.m2, &on.m1) } else { (&on.m1, &on.m2) };
+        Some(PairOnPath {
+            b_first,
+            k: kinematics(ma, mb, on.clock),
+        })
+    }
+
+    /// The shapes `s1`, `s2` (the caller's order) as A, B.
+    fn ordered<'a>(&self, s1: SupportShape<'a>, s2: SupportShape<'a>) -> (SupportShape<'a>, SupportShape<'a>) {
+        if self.b_first {
+            (s2, s1)
+        } else {
+            (s1, s2)
+        }
+    }
+}
+
+/// The time of impact of the shapes `s1` and `s2` moving as `pair` says (the motions and clock
 /// a tracker would run) over `[t0, t1]`, at target distance `target`, accepting D − δ ≤ `tol`;
 /// the shapes must be apart at `t0` by more than `tol` (the caller's start-contact rules come
 /// first). One body at most may turn. Module docs.
@@ -187,37 +221,27 @@ pub(crate) fn advance_time_of_impact(
     s2: SupportShape,
     g1: &dyn Shape,
     g2: &dyn Shape,
-    on: &OnPath,
+    pair: &PairOnPath,
     t0: Real,
     t1: Real,
     target: Real,
     tol: Real,
     first: Option<Contact>,
 ) -> Advance {
-    let (w1, w2) = (on.m1.angvel, on.m2.angvel);
-    if w1 != 0.0 && w2 != 0.0 {
-        return Advance::Declined;
-    }
-    // A: the body that does not turn (shape 2 when neither does).
-    let b_first = w1 != 0.0;
-    let (sa, sb, ma, mb) = if b_first {
-        (s2, s1, &on.m2, &on.m1)
-    } else {
-        (s1, s2, &on.m1, &on.m2)
-    };
-    let Some(turning) = turning_of(sb, mb.local_center) else {
+    let (b_first, k) = (pair.b_first, &pair.k);
+    let (sa, sb) = pair.ordered(s1, s2);
+    let Some(turning) = turning_of(sb, k.centre) else {
         return Advance::Declined;
     };
-    let k = kinematics(ma, mb, on.clock);
     // The caller's contact at the start (shape 1 first), in A-then-B order.
     let first = first.map(|c| if b_first { swapped(c, &k.pose(t0)) } else { c });
     let (a, b) = if b_first { (g2, g1) } else { (g1, g2) };
     let b_polygonal = matches!(sb, SupportShape::Polygon { .. });
     let g = Parry { a, b, b_polygonal };
-    let Some(r) = advance(sa, sb, g, turning, &k, t0, t1, target, tol, first) else {
+    let Some(r) = advance(sa, sb, g, turning, k, t0, t1, target, tol, first) else {
         return Advance::Declined;
     };
-    Advance::Answer(finish(r, &k, b_first))
+    Advance::Answer(finish(r, k, b_first))
 }
 
 /// What [`advance`] found, in A-then-B order, on the clock.
@@ -226,6 +250,8 @@ struct Found {
     time: Real,
     /// The distance, normal and witnesses at `time` (A's frame), for a hit.
     at: Option<Witnesses>,
+    /// B's pose in A's frame at `time`, where the loop placed it.
+    pose: Option<Pose>,
     rate: Real,
     contacts: usize,
 }
@@ -365,25 +391,28 @@ fn advance(
     // Contacts within `fine` of the target are taken; within `tol`, where the separations make
     // no more progress (a graze between the two).
     let fine = CROSSING_FRACTION * tol;
+    // B's pose at `u`, once placed (the certificate's, then the next contact's).
+    let mut pose: Option<Pose> = None;
     for contacts in 1..=ADVANCE_MAX_CONTACTS {
         let c = match first.take() {
             Some(c) => c,
-            None => contact(sa, sb, &k.pose(u), NO_SECOND_POINT, None)?,
+            None => contact(sa, sb, pose.get_or_insert_with(|| k.pose(u)), NO_SECOND_POINT, None)?,
         };
         let gap = c.dist - target;
         if !gap.is_finite() || (u == t0 && gap <= tol) {
             // In contact at the start: the caller's rules.
             return None;
         }
-        let hit = |at: Witnesses, u: Real| Found {
+        let hit = |at: Witnesses, u: Real, pose: Option<Pose>| Found {
             status: ToiStatus::Hit,
             time: u,
             at: Some(at),
+            pose,
             rate: lowest_piece(turning, k, at.normal, 0.0, u).1,
             contacts,
         };
         if gap <= fine {
-            return Some(hit(Witnesses::of(&c), u));
+            return Some(hit(Witnesses::of(&c), u, pose));
         }
         // S_n = min over B of n·q − h_A(n), taken below the level δ to far below the tolerance
         // (Newton's steps: a step or two more than to the tolerance).
@@ -398,23 +427,25 @@ fn advance(
         match first_crossing(turning, k, axis, u, t1, fine)? {
             Some(next) if next > u => {
                 u = next;
+                let at = *pose.insert(k.pose(u));
                 // A crossing whose witnesses show the distance within the tolerance is the time
                 // of impact without another contact query.
                 let n = match axis {
                     Axis::Fixed { n, .. } => n,
                     Axis::Turning(face) => face.normal_at(k, u),
                 };
-                if let Some(w) = certificate(g, &k.pose(u), n, target + fine) {
-                    return Some(hit(w, u));
+                if let Some(w) = certificate(g, &at, n, target + fine) {
+                    return Some(hit(w, u, Some(at)));
                 }
             }
-            _ if gap <= tol => return Some(hit(Witnesses::of(&c), u)),
+            _ if gap <= tol => return Some(hit(Witnesses::of(&c), u, pose)),
             Some(_) => return None,
             None => {
                 return Some(Found {
                     status: ToiStatus::NoHit,
                     time: t1,
                     at: None,
+                    pose: None,
                     rate: 0.0,
                     contacts,
                 })
@@ -660,7 +691,7 @@ fn finish(r: Found, k: &Kinematics, b_first: bool) -> TimeOfImpact {
     };
     if let Some(w) = r.at {
         // A's frame: A's witness is in its own frame; B's goes to B's.
-        let pose = k.pose(r.time);
+        let pose = r.pose.unwrap_or_else(|| k.pose(r.time));
         out.distance = w.dist;
         out.distance_rate = r.rate;
         out.point1 = w.point_a;

@@ -28,10 +28,9 @@
 //! of the segment, the segment's two normals, against its direction, and A's face normals —
 //! the ones a body passing by, stopping short or moving away is separated along.
 
-use super::{kinematics, Kinematics};
+use super::{Kinematics, PairOnPath};
 use crate::numerics::math::{cross, perp, Real, Vector};
 use crate::query::contact::SupportShape;
-use crate::query::path::OnPath;
 use core::f64::consts::PI;
 
 /// A's face normals tried at most (the contact query's largest polygon).
@@ -129,30 +128,41 @@ fn support(sa: SupportShape, n: Vector) -> Option<Real> {
     }
 }
 
-/// Whether the shapes `s1`, `s2` moving on the path `on` stay farther apart than `level` over
+/// Whether the shapes `s1`, `s2` moving as `pair` says stay farther apart than `level` over
 /// all of `[t0, t1]`, by the bounds of the module docs along a few axes (false: not shown, the
 /// caller's exact queries decide). One body at most may turn.
-pub(crate) fn certified_miss(s1: SupportShape, s2: SupportShape, on: &OnPath, t0: Real, t1: Real, level: Real) -> bool {
-    let (w1, w2) = (on.m1.angvel, on.m2.angvel);
-    if w1 != 0.0 && w2 != 0.0 {
-        return false;
-    }
-    let b_first = w1 != 0.0;
-    let (sa, sb, ma, mb) = if b_first {
-        (s2, s1, &on.m2, &on.m1)
-    } else {
-        (s1, s2, &on.m1, &on.m2)
-    };
-    let k = kinematics(ma, mb, on.clock);
-    let Some(sweep) = sweep_of(sb, &k, t0, t1) else {
+pub(crate) fn certified_miss(
+    s1: SupportShape,
+    s2: SupportShape,
+    pair: &PairOnPath,
+    t0: Real,
+    t1: Real,
+    level: Real,
+) -> bool {
+    let (sa, sb) = pair.ordered(s1, s2);
+    let Some(sweep) = sweep_of(sb, &pair.k, t0, t1) else {
         return false;
     };
     // L(n) > level along `n` (module docs).
     let apart = |n: Vector| -> bool {
+        let reach = n.dot(sweep.xa).min(n.dot(sweep.xb));
+        // A polygon's first vertex first: h_A(n) ≥ v₀·n + r (to the bit: the largest dot is at
+        // least v₀'s, and the rounded sums and differences are monotone), so where the part
+        // below is not above the level neither is the one with h_A(n).
+        if let SupportShape::Polygon {
+            vertices: [v0, ..],
+            radius,
+            ..
+        } = sa
+        {
+            if reach - (v0.dot(n) + radius) - level <= 0.0 {
+                return false;
+            }
+        }
         let Some(h) = support(sa, n) else { return false };
         // The translation's and A's part first: B's part is at most 0 about a centre inside B,
         // so an axis where this part is not above the level is not worth B's bound.
-        let base = n.dot(sweep.xa).min(n.dot(sweep.xb)) - h - level;
+        let base = reach - h - level;
         if base.is_nan() || base <= 0.0 {
             return false;
         }
@@ -210,6 +220,7 @@ mod tests {
     use super::*;
     use crate::numerics::math::Pose;
     use crate::query::contact::contact;
+    use crate::query::path::OnPath;
     use crate::MotionPath;
     use parry2d_f64::query::NonlinearRigidMotion;
 
@@ -260,12 +271,13 @@ mod tests {
                     let mb = NonlinearRigidMotion::new(start, centre, v, uniform(-3.0, 3.0));
                     let ma = NonlinearRigidMotion::constant_position(Pose::IDENTITY);
                     let on = OnPath::new(&ma, &mb, 0.0, 1.0, MotionPath::Nlerp).unwrap();
+                    let pair = PairOnPath::of(&on).unwrap();
                     cases += 1;
-                    if !certified_miss(sa, sb, &on, 0.0, 1.0, level) {
+                    if !certified_miss(sa, sb, &pair, 0.0, 1.0, level) {
                         continue;
                     }
                     certified += 1;
-                    let k = kinematics(&on.m1, &on.m2, on.clock);
+                    let k = &pair.k;
                     for i in 0..=2000 {
                         let t = i as Real / 2000.0;
                         let c = contact(sa, sb, &k.pose(t), 2.0, None).unwrap();
