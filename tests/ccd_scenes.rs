@@ -93,25 +93,8 @@ fn no_body_goes_through_a_wall_nor_freezes_in_the_ccd_scene_suite() {
 /// prints the table of both methods).
 #[test]
 fn no_body_goes_through_a_wall_nor_freezes_with_contact_recycling_off() {
-    let cases: Vec<Case> = all_cases()
-        .into_iter()
-        .map(|c| Case { recycling: false, ..c })
-        .collect();
-    let mut failures = Vec::new();
-    let mut frozen = 0;
-    for c in &cases {
-        let o = run_case(c, Method::Smooth);
-        frozen += o.frozen.is_some() as usize;
-        failures.extend(failures_of(c, &o));
-    }
-    println!("contact recycling off: {} cases, {frozen} frozen", cases.len());
-    assert_eq!(frozen, 0, "frozen with recycling off:\n{}", failures.join("\n"));
-    assert!(
-        failures.is_empty(),
-        "{} failures:\n{}",
-        failures.len(),
-        failures.join("\n")
-    );
+    let cases = all_cases().into_iter().map(|c| Case { recycling: false, ..c });
+    no_body_through_nor_frozen(cases.collect(), "contact recycling off");
 }
 
 /// The remedy docs/rapier.md ("What is left") gives a user whose thin CCD body freezes with
@@ -122,7 +105,13 @@ fn no_body_goes_through_a_wall_nor_freezes_with_contact_recycling_off() {
 /// `cargo run --release --example ccd_scenes --ccd-hooks` prints the table of both methods).
 #[test]
 fn no_body_freezes_when_the_ccd_bodies_have_active_hooks() {
-    let cases: Vec<Case> = all_cases().into_iter().map(|c| Case { ccd_hooks: true, ..c }).collect();
+    let cases = all_cases().into_iter().map(|c| Case { ccd_hooks: true, ..c });
+    no_body_through_nor_frozen(cases.collect(), "CCD bodies with active hooks");
+}
+
+/// Runs every case with `SmoothDispatcher`, prints the count, and asserts no case froze and no
+/// case failed otherwise (through, NaN, panic).
+fn no_body_through_nor_frozen(cases: Vec<Case>, setting: &str) {
     let mut failures = Vec::new();
     let mut frozen = 0;
     for c in &cases {
@@ -130,13 +119,8 @@ fn no_body_freezes_when_the_ccd_bodies_have_active_hooks() {
         frozen += o.frozen.is_some() as usize;
         failures.extend(failures_of(c, &o));
     }
-    println!("CCD bodies with active hooks: {} cases, {frozen} frozen", cases.len());
-    assert_eq!(
-        frozen,
-        0,
-        "frozen with the CCD bodies' hooks on:\n{}",
-        failures.join("\n")
-    );
+    println!("{setting}: {} cases, {frozen} frozen", cases.len());
+    assert_eq!(frozen, 0, "frozen with {setting}:\n{}", failures.join("\n"));
     assert!(
         failures.is_empty(),
         "{} failures:\n{}",
