@@ -29,8 +29,8 @@
 //! bit on random pairs, ties included (faces parallel, corners facing, touching).
 
 use super::arc::in_arc;
-use super::side::{turning, SupportShape, MAX_BREAKPOINTS};
-use super::walk::{before, half, wrap, At, Entry, Minimum, TIE};
+use super::side::{polygon_is_walkable, SupportShape, MAX_BREAKPOINTS};
+use super::walk::{first_breakpoints, for_each_merged, wrap, At, Entry, Minimum, TIE};
 use super::{clip_faces, Contact, ContactPoint, FacingFaces, Feature};
 use crate::numerics::math::{cross, Pose, Vector};
 
@@ -71,10 +71,10 @@ impl Poly {
                 normals,
                 radius,
             } => {
-                let n = vertices.len();
-                if !(2..=MAX_BREAKPOINTS).contains(&n) || normals.len() != n || !turning(normals) {
+                if !polygon_is_walkable(vertices, normals) {
                     return false;
                 }
+                let n = vertices.len();
                 self.len = n;
                 self.r = radius;
                 for (k, normal) in normals.iter().enumerate() {
@@ -173,30 +173,10 @@ impl<'a> Merged<'a> {
         let sides = w.sides;
         let [s0, s1] = sides;
         let start = if s0.len > 0 { s0.normals[0] } else { s1.normals[0] };
-        let mut first = [0usize; 2];
-        let mut halves = [[0u8; MAX_BREAKPOINTS]; 2];
-        for (s, side) in sides.iter().enumerate() {
-            for k in 0..side.len {
-                halves[s][k] = half(start, side.normals[k]);
-                let f = first[s];
-                if k > 0 && before(halves[s][k], side.normals[k], halves[s][f], side.normals[f]) {
-                    first[s] = k;
-                }
-            }
-        }
+        let (normals, lens) = ([&s0.normals, &s1.normals], [s0.len, s1.len]);
+        let (first, halves) = first_breakpoints(start, normals, lens);
         let mut active = [s0.before(first[0]) as u8, s1.before(first[1]) as u8];
-        let (mut i0, mut i1) = (0, 0);
-        while i0 < s0.len || i1 < s1.len {
-            let k0 = wrap(first[0] + i0, s0.len);
-            let k1 = wrap(first[1] + i1, s1.len);
-            let take0 =
-                i1 >= s1.len || (i0 < s0.len && !before(halves[1][k1], s1.normals[k1], halves[0][k0], s0.normals[k0]));
-            let (side, k) = if take0 { (0, k0) } else { (1, k1) };
-            if take0 {
-                i0 += 1;
-            } else {
-                i1 += 1;
-            }
+        for_each_merged(first, &halves, normals, lens, |side, k| {
             active[side] = k as u8;
             let value = w.value([active[0] as usize, active[1] as usize], sides[side].normals[k]);
             w.entries[w.len] = Entry {
@@ -206,7 +186,7 @@ impl<'a> Merged<'a> {
                 active,
             };
             w.len += 1;
-        }
+        });
     }
 
     /// F at n on the pieces `p`.

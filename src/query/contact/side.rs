@@ -97,6 +97,13 @@ pub(super) fn turning(normals: &[Vector]) -> bool {
     (0..n).all(|k| crate::numerics::math::cross(normals[k], normals[if k + 1 == n { 0 } else { k + 1 }]) > 0.0)
 }
 
+/// Whether the walk takes a polygon of these vertices and edge normals: 2 to
+/// [`MAX_BREAKPOINTS`] vertices, one normal each, normals [`turning`].
+#[inline]
+pub(super) fn polygon_is_walkable(vertices: &[Vector], normals: &[Vector]) -> bool {
+    (2..=MAX_BREAKPOINTS).contains(&vertices.len()) && normals.len() == vertices.len() && turning(normals)
+}
+
 /// How a side's breakpoints are faces and its pieces are named.
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
 enum Layout {
@@ -165,10 +172,10 @@ impl Placed {
                 normals,
                 radius,
             } => {
-                let n = vertices.len();
-                if !(2..=MAX_BREAKPOINTS).contains(&n) || normals.len() != n || !turning(normals) {
+                if !polygon_is_walkable(vertices, normals) {
                     return false;
                 }
+                let n = vertices.len();
                 s.len = n;
                 s.layout = Layout::Polygon;
                 for (k, normal) in normals.iter().enumerate() {

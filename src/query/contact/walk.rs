@@ -70,6 +70,55 @@ pub(super) fn before(ha: u8, a: Vector, hb: u8, b: Vector) -> bool {
     ha < hb || (ha == hb && cross(a, b) > 0.0)
 }
 
+/// Each side's half-turns from `start` of its breakpoint normals, and the index of its first
+/// breakpoint counter-clockwise from `start` (the normals are cyclically sorted): where the
+/// merge of [`for_each_merged`] begins on each side.
+#[inline(always)]
+pub(super) fn first_breakpoints(
+    start: Vector,
+    normals: [&[Vector; MAX_BREAKPOINTS]; 2],
+    lens: [usize; 2],
+) -> ([usize; 2], [[u8; MAX_BREAKPOINTS]; 2]) {
+    let mut first = [0usize; 2];
+    let mut halves = [[0u8; MAX_BREAKPOINTS]; 2];
+    for s in 0..2 {
+        for k in 0..lens[s] {
+            halves[s][k] = half(start, normals[s][k]);
+            let f = first[s];
+            if k > 0 && before(halves[s][k], normals[s][k], halves[s][f], normals[s][f]) {
+                first[s] = k;
+            }
+        }
+    }
+    (first, halves)
+}
+
+/// Visits the breakpoints of both sides in counter-clockwise order from their `first`
+/// ([`first_breakpoints`]), `visit(side, k)` each; of two equal directions side 0's comes first.
+#[inline(always)]
+pub(super) fn for_each_merged(
+    first: [usize; 2],
+    halves: &[[u8; MAX_BREAKPOINTS]; 2],
+    normals: [&[Vector; MAX_BREAKPOINTS]; 2],
+    lens: [usize; 2],
+    mut visit: impl FnMut(usize, usize),
+) {
+    let (mut i0, mut i1) = (0, 0);
+    while i0 < lens[0] || i1 < lens[1] {
+        let k0 = wrap(first[0] + i0, lens[0]);
+        let k1 = wrap(first[1] + i1, lens[1]);
+        let take0 =
+            i1 >= lens[1] || (i0 < lens[0] && !before(halves[1][k1], normals[1][k1], halves[0][k0], normals[0][k0]));
+        if take0 {
+            i0 += 1;
+            visit(0, k0);
+        } else {
+            i1 += 1;
+            visit(1, k1);
+        }
+    }
+}
+
 /// The merged walk of two placed sides.
 pub(crate) struct Walk<'a> {
     pub sides: [&'a Placed; 2],
@@ -121,31 +170,11 @@ impl<'a> Walk<'a> {
         };
         w.len = 0;
         // Each side's breakpoints from the first after `start` on (they are cyclically sorted).
-        let mut first = [0usize; 2];
-        let mut halves = [[0u8; MAX_BREAKPOINTS]; 2];
-        for (s, side) in sides.iter().enumerate() {
-            for k in 0..side.len {
-                halves[s][k] = half(start, side.normals[k]);
-                let f = first[s];
-                if k > 0 && before(halves[s][k], side.normals[k], halves[s][f], side.normals[f]) {
-                    first[s] = k;
-                }
-            }
-        }
+        let (normals, lens) = ([&s0.normals, &s1.normals], [s0.len, s1.len]);
+        let (first, halves) = first_breakpoints(start, normals, lens);
         let prev = |s: &Placed, k: usize| (if k == 0 { s.len.max(1) - 1 } else { k - 1 }) as u8;
         let mut active = [prev(s0, first[0]), prev(s1, first[1])];
-        let (mut i0, mut i1) = (0, 0);
-        while i0 < s0.len || i1 < s1.len {
-            let k0 = wrap(first[0] + i0, s0.len);
-            let k1 = wrap(first[1] + i1, s1.len);
-            let take0 =
-                i1 >= s1.len || (i0 < s0.len && !before(halves[1][k1], s1.normals[k1], halves[0][k0], s0.normals[k0]));
-            let (side, k) = if take0 { (0, k0) } else { (1, k1) };
-            if take0 {
-                i0 += 1;
-            } else {
-                i1 += 1;
-            }
+        for_each_merged(first, &halves, normals, lens, |side, k| {
             active[side] = k as u8;
             let value = w.value([active[0] as usize, active[1] as usize], sides[side].normals[k]);
             w.entries[w.len] = Entry {
@@ -155,7 +184,7 @@ impl<'a> Walk<'a> {
                 active,
             };
             w.len += 1;
-        }
+        });
     }
 
     /// The indices of the pieces active after merged breakpoint i (the only pieces with no
