@@ -101,11 +101,16 @@ impl<'a> FaceAxis<'a> {
         -(k.turn(u).0 * self.m)
     }
 
+    /// Whether A is a polygon (not a disc): whether [`FaceAxis::run`] can leave a vertex out.
+    pub(super) fn is_polygon(&self) -> bool {
+        !self.normals.is_empty()
+    }
+
     /// A's vertices that can be the minimum while B turns from the rotation `r0` to `r1`,
     /// counter-clockwise when `ccw`, through less than half a turn (`support_run`: min over A
     /// of m·a is A's support along −m, which turns with B); `None` (all of them) for a disc.
     pub(super) fn run(&self, r0: Rotation, r1: Rotation, ccw: bool) -> Option<Run> {
-        (!self.normals.is_empty())
+        self.is_polygon()
             .then(|| support_run(self.vertices, self.normals, -(r0 * self.m), -(r1 * self.m), ccw))
     }
 

@@ -700,19 +700,24 @@ fn first_crossing(
 /// minimum between clock times `u` and `u1` (`support_run`); `None` (all of them) where the
 /// pieces are not a polygon's vertices.
 fn axis_run(turning: Turning, k: &Kinematics, axis: Axis, u: Real, u1: Real) -> Option<Run> {
-    let ccw = k.short_turn(u, u1)?;
-    let (r0, r1) = (k.turn(u).0, k.turn(u1).0);
+    // B's rotations at both ends, only where the pieces are a polygon's vertices.
+    let ends = || Some((k.short_turn(u, u1)?, k.turn(u).0, k.turn(u1).0));
     match axis {
         // min over B's vertices of w·(v − c), w = R(θ)ᵀn: B's support along −w, which turns
         // the other way from B.
         Axis::Fixed { n, .. } => match turning {
             Turning::Polygon { vertices, normals, .. } => {
+                let (ccw, r0, r1) = ends()?;
                 let (d0, d1) = (-(r0.inverse() * n), -(r1.inverse() * n));
                 Some(support_run(vertices, normals, d0, d1, !ccw))
             }
             _ => None,
         },
-        Axis::Turning(face) => face.run(r0, r1, ccw),
+        Axis::Turning(face) if face.is_polygon() => {
+            let (ccw, r0, r1) = ends()?;
+            face.run(r0, r1, ccw)
+        }
+        Axis::Turning(_) => None,
     }
 }
 
