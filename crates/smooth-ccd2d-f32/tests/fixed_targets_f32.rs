@@ -7,7 +7,10 @@
 //! counts.
 
 use rapier2d::prelude::*;
-use smooth_ccd2d_f32::{MovingPairs, MovingPairsOptions, SmoothDispatcher};
+use smooth_ccd2d_f32::{MovingPairs, MovingPairsOptions};
+
+mod uncapped;
+use uncapped::uncapped_world;
 
 /// The wall's centre (x, m) and half-thickness.
 const WALL_X: f32 = 3.0;
@@ -16,13 +19,7 @@ const WALL_HALF: f32 = 0.05;
 /// Whether the cuboid's centre ever reached the wall's middle in 40 steps of 1/60 s: shot from
 /// x = −3 at `velocity`, spinning at `spin`, turned by `angle`, with the pass of `options`.
 fn crossed(velocity: Vector, spin: f32, angle: f32, options: MovingPairsOptions) -> bool {
-    let mut w = PhysicsWorld {
-        gravity: Vector::ZERO,
-        narrow_phase: NarrowPhase::with_query_dispatcher(SmoothDispatcher::default()),
-        ..PhysicsWorld::default()
-    };
-    w.integration_parameters.dt = 1.0 / 60.0;
-    w.integration_parameters.normalized_max_linear_velocity = f32::MAX;
+    let mut w = uncapped_world();
     let wall = w
         .bodies
         .insert(RigidBodyBuilder::fixed().translation(Vector::new(WALL_X, 0.0)));

@@ -6,7 +6,10 @@
 //! counts.
 
 use rapier2d::prelude::*;
-use smooth_ccd2d_f32::{CoreContactHooks, MovingPairs, OneBounceHooks, RoundedPolygon, SmoothDispatcher};
+use smooth_ccd2d_f32::{CoreContactHooks, MovingPairs, OneBounceHooks, RoundedPolygon};
+
+mod uncapped;
+use uncapped::uncapped_world;
 
 /// A gain: kinetic energy after above before by more than this fraction (f32 rounding of the
 /// solver's sums: about a hundred units in the last place of an f32).
@@ -44,13 +47,7 @@ fn energy(bodies: &RigidBodySet) -> f64 {
 /// Energy after over before of one head-on shot: shapes `a`, `b`, each at `speed` towards the
 /// other, spins `spins`, initial angles `angles`, 20 steps of 1/60 s with the pass and `hooks`.
 fn shot(a: usize, b: usize, speed: f32, spins: (f32, f32), angles: (f32, f32), hooks: &dyn PhysicsHooks) -> f64 {
-    let mut w = PhysicsWorld {
-        gravity: Vector::ZERO,
-        narrow_phase: NarrowPhase::with_query_dispatcher(SmoothDispatcher::default()),
-        ..PhysicsWorld::default()
-    };
-    w.integration_parameters.dt = 1.0 / 60.0;
-    w.integration_parameters.normalized_max_linear_velocity = f32::MAX;
+    let mut w = uncapped_world();
     for (k, x, v, spin, angle) in [(a, -3.0, speed, spins.0, angles.0), (b, 3.0, -speed, spins.1, angles.1)] {
         let body = w.bodies.insert(
             RigidBodyBuilder::dynamic()

@@ -2,9 +2,11 @@
 //! separating-axis advancement at a contact on a face of B ([`FaceAxis`]; the module docs of
 //! `query::advance`).
 
+use super::support_run::{support_run, Run};
 use super::{Kinematics, Turning};
 use crate::numerics::math::{perp, Real, Vector};
 use crate::query::contact::{Contact, Feature, SupportShape};
+use parry2d_f64::math::Rotation;
 
 /// A separating axis along which `first_crossing` steps.
 #[derive(Copy, Clone)]
@@ -39,6 +41,8 @@ const ORIGIN: [Vector; 1] = [Vector::ZERO];
 pub(super) struct FaceAxis<'a> {
     /// A's vertices (a disc: its centre).
     vertices: &'a [Vector],
+    /// A's edge normals (`support_run`'s order; none for a disc).
+    normals: &'a [Vector],
     /// The unit face normal in B's frame.
     m: Vector,
     /// r_A + H + δ.
@@ -63,13 +67,18 @@ impl<'a> FaceAxis<'a> {
             vertices: vb,
             radius: rb,
             centre,
+            ..
         } = turning
         else {
             return None;
         };
-        let (vertices, ra) = match sa {
-            SupportShape::Polygon { vertices, radius, .. } => (vertices, radius),
-            SupportShape::Disc(r) => (&ORIGIN[..], r),
+        let (vertices, normals, ra) = match sa {
+            SupportShape::Polygon {
+                vertices,
+                normals,
+                radius,
+            } => (vertices, normals, radius),
+            SupportShape::Disc(r) => (&ORIGIN[..], &[][..], r),
             _ => return None,
         };
         let m = k.turn(u).0.inverse() * -c.normal;
@@ -79,7 +88,12 @@ impl<'a> FaceAxis<'a> {
             .fold(Real::NEG_INFINITY, Real::max)
             + rb;
         let offset = ra + h + target;
-        (offset.is_finite() && m.is_finite()).then_some(FaceAxis { vertices, m, offset })
+        (offset.is_finite() && m.is_finite()).then_some(FaceAxis {
+            vertices,
+            normals,
+            m,
+            offset,
+        })
     }
 
     /// The axis in A's frame at clock time `u`, as a contact normal (from A towards B).
@@ -87,15 +101,30 @@ impl<'a> FaceAxis<'a> {
         -(k.turn(u).0 * self.m)
     }
 
+    /// Whether A is a polygon (not a disc): whether [`FaceAxis::run`] can leave a vertex out.
+    pub(super) fn is_polygon(&self) -> bool {
+        !self.normals.is_empty()
+    }
+
+    /// A's vertices that can be the minimum while B turns from the rotation `r0` to `r1`,
+    /// counter-clockwise when `ccw`, through less than half a turn (`support_run`: min over A
+    /// of m·a is A's support along −m, which turns with B); `None` (all of them) for a disc.
+    pub(super) fn run(&self, r0: Rotation, r1: Rotation, ccw: bool) -> Option<Run> {
+        self.is_polygon()
+            .then(|| support_run(self.vertices, self.normals, -(r0 * self.m), -(r1 * self.m), ccw))
+    }
+
     /// Calls `each(fᵢ, fᵢ′, ρᵢ)` for every piece at clock time `u` (type docs), ρᵢ such that
-    /// `turn`·ρᵢ bounds |fᵢ″| up to `u_end`, `turn` = θ′² + |θ″| and `d1` = |θ′| bounded there;
-    /// answers no cap (infinite).
+    /// `turn`·ρᵢ bounds |fᵢ″| up to `u_end`, `turn` = θ′² + |θ″| and `d1` = |θ′| bounded there —
+    /// of A's vertices, those of `run` only where given ([`FaceAxis::run`]); answers no cap
+    /// (infinite).
     pub(super) fn pieces(
         &self,
         k: &Kinematics,
         u: Real,
         u_end: Real,
         (d1, turn): (Real, Real),
+        run: Option<Run>,
         mut each: impl FnMut(Real, Real, Real),
     ) -> Real {
         let (rotation, dtheta) = k.turn(u);
@@ -109,7 +138,7 @@ impl<'a> FaceAxis<'a> {
             0.0
         };
         let dm = m.dot(k.d);
-        for a in self.vertices {
+        for a in run.unwrap_or(Run::all(self.vertices.len())).of(self.vertices) {
             let r = *a - x;
             let rho = r.length().max((*a - x_end).length()) + cross;
             each(m.dot(r) - self.offset, dtheta * pm.dot(r) - dm, rho);

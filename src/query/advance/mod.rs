@@ -49,6 +49,7 @@
 use crate::numerics::clock::Clock;
 use crate::numerics::math::{perp, sin_cos, Pose, Real, Vector};
 mod face_axis;
+mod support_run;
 mod swept;
 
 pub(crate) use swept::certified_miss;
@@ -61,6 +62,7 @@ use face_axis::{Axis, FaceAxis};
 use parry2d_f64::math::Rotation;
 use parry2d_f64::query::NonlinearRigidMotion;
 use parry2d_f64::shape::Shape;
+use support_run::{support_run, Run};
 
 /// Exact contacts one advancement computes at most before it hands the query to the trackers.
 pub(crate) const ADVANCE_MAX_CONTACTS: usize = 24;
@@ -81,9 +83,10 @@ const NO_SECOND_POINT: Real = 2.0;
 /// The turning body's support seen along the axis: what [`pieces`] needs of it.
 #[derive(Copy, Clone)]
 enum Turning<'a> {
-    /// Vertices, radius, and the rotation centre c.
+    /// Vertices, their edge normals (`support_run`'s order), radius, and the rotation centre c.
     Polygon {
         vertices: &'a [Vector],
+        normals: &'a [Vector],
         radius: Real,
         centre: Vector,
     },
@@ -141,6 +144,15 @@ impl Kinematics {
                 )
             }
         }
+    }
+
+    /// Whether B turns counter-clockwise from path time `ta` to `tb`, where it turns through
+    /// less than half a turn: always on the nlerp path (its turn over the window is less than
+    /// half a turn, in the sense of ω: θ′ = ω·(k/h)/(1 + y²), k/h > 0); on parry's motion where
+    /// |ω|·(tb − ta) < π. `None` otherwise.
+    fn short_turn(&self, ta: Real, tb: Real) -> Option<bool> {
+        (self.clock.is_some() || self.omega.abs() * (tb - ta).abs() < core::f64::consts::PI)
+            .then_some(self.omega >= 0.0)
     }
 
     /// Bounds of |θ′| and |θ″| for path times between `ta` and `tb`.
@@ -358,8 +370,13 @@ fn kinematics(ma: &NonlinearRigidMotion, mb: &NonlinearRigidMotion, clock: Optio
 /// The turning body as [`pieces`] reads it, about its rotation centre `c`.
 fn turning_of(s: SupportShape, c: Vector) -> Option<Turning> {
     match s {
-        SupportShape::Polygon { vertices, radius, .. } => Some(Turning::Polygon {
+        SupportShape::Polygon {
             vertices,
+            normals,
+            radius,
+        } => Some(Turning::Polygon {
+            vertices,
+            normals,
             radius,
             centre: c,
         }),
@@ -493,7 +510,7 @@ fn support_value(sa: SupportShape, c: &Contact, n: Vector) -> Option<Real> {
 /// The lowest piece of S_n + h_A(n) − `h` at clock time `u`: its value and derivative.
 fn lowest_piece(turning: Turning, k: &Kinematics, n: Vector, h: Real, u: Real) -> (Real, Real) {
     let mut lowest = (Real::INFINITY, 0.0);
-    pieces(turning, k, n, h, u, u, |f, df, _| {
+    pieces(turning, k, n, h, u, u, None, |f, df, _| {
         if f < lowest.0 {
             lowest = (f, df);
         }
@@ -502,9 +519,11 @@ fn lowest_piece(turning: Turning, k: &Kinematics, n: Vector, h: Real, u: Real) -
 }
 
 /// Calls `each(f, f′, ρ)` for every piece of min over B of n·q − `h` at clock time `u` (module
-/// docs: with `h` = h_A(n) + δ, the pieces of S_n − δ); answers the longest step over which
-/// these pieces bound S_n (infinite but for a `CapsuleEllipse`, whose pieces change with the
-/// direction).
+/// docs: with `h` = h_A(n) + δ, the pieces of S_n − δ) — of a polygon B, the vertices of `run`
+/// only where given (`support_run`: those that can be the minimum up to `u_end`); answers the
+/// longest step over which these pieces bound S_n (infinite but for a `CapsuleEllipse`, whose
+/// pieces change with the direction).
+#[allow(clippy::too_many_arguments)]
 fn pieces(
     turning: Turning,
     k: &Kinematics,
@@ -512,6 +531,7 @@ fn pieces(
     h: Real,
     u: Real,
     u_end: Real,
+    run: Option<Run>,
     mut each: impl FnMut(Real, Real, Real),
 ) -> Real {
     let (rotation, dtheta) = k.turn(u);
@@ -526,8 +546,9 @@ fn pieces(
             vertices,
             radius,
             centre,
+            ..
         } => {
-            for v in vertices {
+            for v in run.unwrap_or(Run::all(vertices.len())).of(vertices) {
                 // f = n·x + w·(v − c) − r − h;  f′ = n·d τ′ − θ′ perp(w)·(v − c).
                 let p = *v - centre;
                 each(base + w.dot(p) - radius, dbase - dtheta * pw.dot(p), p.length());
@@ -605,6 +626,8 @@ fn first_crossing(
     // of the window and follows the steps (twice the last), so that the steps away from the peak
     // are not held to the peak's rate.
     let adaptive = k.turn_varies();
+    // The vertices that can be the separation's minimum up to `u1` (`support_run`).
+    let run = axis_run(turning, k, axis, u, u1);
     let mut horizon = u1 - u;
     let (mut d1, mut d2) = k.turn_bounds(u, u1);
     for _ in 0..ADVANCE_MAX_STEPS {
@@ -638,12 +661,13 @@ fn first_crossing(
             step = step.min(s);
         };
         let cap = match axis {
-            Axis::Fixed { n, level } => pieces(turning, k, n, level, u, u1, each),
+            Axis::Fixed { n, level } => pieces(turning, k, n, level, u, u1, run, each),
             Axis::Turning(face) => face.pieces(
                 k,
                 u,
                 if adaptive { (u + horizon).min(u1) } else { u1 },
                 (d1, turn),
+                run,
                 each,
             ),
         };
@@ -670,6 +694,31 @@ fn first_crossing(
         horizon = 2.0 * step;
     }
     None
+}
+
+/// The vertices of the polygon whose pieces make the separation along `axis` that can be its
+/// minimum between clock times `u` and `u1` (`support_run`); `None` (all of them) where the
+/// pieces are not a polygon's vertices.
+fn axis_run(turning: Turning, k: &Kinematics, axis: Axis, u: Real, u1: Real) -> Option<Run> {
+    // B's rotations at both ends, only where the pieces are a polygon's vertices.
+    let ends = || Some((k.short_turn(u, u1)?, k.turn(u).0, k.turn(u1).0));
+    match axis {
+        // min over B's vertices of w·(v − c), w = R(θ)ᵀn: B's support along −w, which turns
+        // the other way from B.
+        Axis::Fixed { n, .. } => match turning {
+            Turning::Polygon { vertices, normals, .. } => {
+                let (ccw, r0, r1) = ends()?;
+                let (d0, d1) = (-(r0.inverse() * n), -(r1.inverse() * n));
+                Some(support_run(vertices, normals, d0, d1, !ccw))
+            }
+            _ => None,
+        },
+        Axis::Turning(face) if face.is_polygon() => {
+            let (ccw, r0, r1) = ends()?;
+            face.run(r0, r1, ccw)
+        }
+        Axis::Turning(_) => None,
+    }
 }
 
 /// The answer in the caller's order and on the path's time.
