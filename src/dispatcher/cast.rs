@@ -18,8 +18,7 @@ use super::SmoothDispatcher;
 use crate::error::QueryError;
 use crate::numerics::math::{Pose, Real};
 use crate::numerics::motion::motion_is_finite;
-use crate::query::advance::{advance_time_of_impact, certified_miss, Advance, PairOnPath};
-use crate::query::contact::Contact;
+use crate::query::advance::{advance_time_of_impact, certified_miss, face_separation, Advance, PairOnPath, Start};
 use crate::query::contact::SupportShape;
 use crate::query::gap::{gap_distance, gap_time_of_impact, gap_time_to_level};
 use crate::query::halfspace::{halfspace_distance, time_of_impact_halfspace};
@@ -434,6 +433,19 @@ fn rapier_fast_path(
         if certified_miss(s1, s2, f, c.t0, c.t1, miss_level(c, opts)) {
             return Some(Ok(None));
         }
+        // A's face normal along which the pair is furthest apart at the start: apart by more
+        // than the start-contact gap and the advancement's tolerance along it, the shapes are
+        // apart (the separation bounds the distance from below) and the advancement starts from
+        // it without the exact contact (`query::advance::face_separation`).
+        if let Some((start, sep)) = face_separation(s1, s2, f, c.t0) {
+            if out_of_reach(c, sep, opts.target_distance) {
+                return Some(Ok(None));
+            }
+            let apart = sep - opts.target_distance > advance_tolerance(c, opts) && !in_contact(c, sep);
+            if apart {
+                return advanced(c, f, s1, s2, opts, start);
+            }
+        }
     }
     let k0 = exact_contact_of(s1, s2, &pos12, None)?;
     let d0 = k0.dist;
@@ -447,7 +459,7 @@ fn rapier_fast_path(
             })
         });
     }
-    advanced(c, &frame.or_else(pair)?, s1, s2, opts, Some(k0))
+    advanced(c, &frame.or_else(pair)?, s1, s2, opts, Start::Contact(Some(k0)))
 }
 
 /// Whether both motions start at poses parry can use ([`input_guard::pose_ok`]: a unit rotation
@@ -542,18 +554,18 @@ fn level_by_route(
 }
 
 /// The separating-axis advancement (`query::advance`) of a cast whose shapes (`s1`, `s2`, as the
-/// contact query reads them) are apart at its start, moving as `pair` says, `first` their
-/// contact there; `None` where it declines (the trackers answer then).
+/// contact query reads them) are apart at its start, moving as `pair` says, from `start` (their
+/// contact there, or a separating axis); `None` where it declines (the trackers answer then).
 fn advanced(
     c: &NonlinearCast,
     pair: &PairOnPath,
     s1: SupportShape,
     s2: SupportShape,
     opts: &ToiOptions,
-    first: Option<Contact>,
+    start: Start,
 ) -> Option<Result<Option<ShapeCastHit>, Unsupported>> {
     let tol = advance_tolerance(c, opts);
-    match advance_time_of_impact(s1, s2, c.g1, c.g2, pair, c.t0, c.t1, opts.target_distance, tol, first) {
+    match advance_time_of_impact(s1, s2, c.g1, c.g2, pair, c.t0, c.t1, opts.target_distance, tol, start) {
         Advance::Answer(t) => Some(toi_to_parry(Ok(Some(t)))),
         Advance::Declined => None,
     }

@@ -35,6 +35,14 @@
 //! safe for each piece (the parabola lies below it), and the smallest over the pieces is safe for S_n; near a crossing it is Newton's step to
 //! second order, so the first crossing of S_n is found in a few steps.
 //!
+//! The first axis need not come from a contact: any separating axis bounds D from below. Where
+//! the caller finds A's face normal of largest separation at the start apart by more than the
+//! start-contact gap ([`face_separation`]: the exact distance when a vertex or an arc of B is
+//! nearest a face of A, the usual start of a body flying at a wall), the advancement starts
+//! from it ([`Start::Axis`]) and the first contact query waits for the first crossing, where
+//! the certificate often makes it unneeded. The certificate's projections on a polygon or a
+//! disc are exact (`project`), at every scale.
+//!
 //! At a contact on a face of B (B a polygon, A a polygon or a disc) the axis is that face's
 //! normal turning with B instead of n fixed in A ([`FaceAxis`]): still a separating axis at
 //! every time, and tangent to D without the kink that the fixed axis has where B's face turns
@@ -48,15 +56,20 @@
 
 use crate::numerics::clock::Clock;
 use crate::numerics::math::{perp, sin_cos, Pose, Real, Vector};
+mod certificate;
 mod face_axis;
+mod project;
+mod start;
 mod support_run;
 mod swept;
 
+pub(crate) use start::{face_separation, Start};
 pub(crate) use swept::certified_miss;
 
 use crate::query::contact::{contact, Contact, SupportShape};
 use crate::query::path::OnPath;
 use crate::query::toi::{TimeOfImpact, ToiCost, ToiStatus};
+use certificate::{certificate, Parry, Witnesses};
 use core::f64::consts::FRAC_PI_2;
 use face_axis::{Axis, FaceAxis};
 use parry2d_f64::math::Rotation;
@@ -226,7 +239,7 @@ impl PairOnPath {
 /// The time of impact of the shapes `s1` and `s2` moving as `pair` says (the motions and clock
 /// a tracker would run) over `[t0, t1]`, at target distance `target`, accepting D − δ ≤ `tol`;
 /// the shapes must be apart at `t0` by more than `tol` (the caller's start-contact rules come
-/// first). One body at most may turn. Module docs.
+/// first), the advancement starting as `start` says. One body at most may turn. Module docs.
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn advance_time_of_impact(
     s1: SupportShape,
@@ -238,7 +251,7 @@ pub(crate) fn advance_time_of_impact(
     t1: Real,
     target: Real,
     tol: Real,
-    first: Option<Contact>,
+    start: Start,
 ) -> Advance {
     let (b_first, k) = (pair.b_first, &pair.k);
     let (sa, sb) = pair.ordered(s1, s2);
@@ -246,11 +259,20 @@ pub(crate) fn advance_time_of_impact(
         return Advance::Declined;
     };
     // The caller's contact at the start (shape 1 first), in A-then-B order.
-    let first = first.map(|c| if b_first { swapped(c, &k.pose(t0)) } else { c });
+    let start = match start {
+        Start::Contact(first) => Start::Contact(first.map(|c| if b_first { swapped(c, &k.pose(t0)) } else { c })),
+        axis => axis,
+    };
     let (a, b) = if b_first { (g2, g1) } else { (g1, g2) };
     let b_polygonal = matches!(sb, SupportShape::Polygon { .. });
-    let g = Parry { a, b, b_polygonal };
-    let Some(r) = advance(sa, sb, g, turning, k, t0, t1, target, tol, first) else {
+    let g = Parry {
+        a,
+        b,
+        sa,
+        sb,
+        b_polygonal,
+    };
+    let Some(r) = advance(sa, sb, g, turning, k, t0, t1, target, tol, start) else {
         return Advance::Declined;
     };
     Advance::Answer(finish(r, k, b_first))
@@ -266,80 +288,6 @@ struct Found {
     pose: Option<Pose>,
     rate: Real,
     contacts: usize,
-}
-
-/// A distance with its normal and witness points, all in A's frame.
-#[derive(Copy, Clone)]
-struct Witnesses {
-    dist: Real,
-    normal: Vector,
-    point_a: Vector,
-    point_b: Vector,
-}
-
-impl Witnesses {
-    fn of(c: &Contact) -> Self {
-        Witnesses {
-            dist: c.dist,
-            normal: c.normal,
-            point_a: c.points[0].point1,
-            point_b: c.points[0].point2,
-        }
-    }
-}
-
-/// The two shapes of a query as parry has them (A first), for the certificate of a crossing.
-#[derive(Copy, Clone)]
-pub(crate) struct Parry<'a> {
-    pub a: &'a dyn Shape,
-    pub b: &'a dyn Shape,
-    /// Whether B is a polygon (dilated or not).
-    pub b_polygonal: bool,
-}
-
-/// At a crossing of S_n (B at `pose` in A's frame, `n` the axis), an upper bound of the signed
-/// distance without a contact query: the distance from B's lowest point along n to A (or from
-/// A's highest point along n to B) is at least D. When it is at most `enough` (the target and
-/// the tolerance) the crossing is the time of impact (D is between S_n and it), with these
-/// witnesses; otherwise the contact query decides.
-fn certificate(g: Parry, pose: &Pose, n: Vector, enough: Real) -> Option<Witnesses> {
-    let (sa, sb) = (g.a.as_support_map()?, g.b.as_support_map()?);
-    let ok = |w: &Witnesses| w.dist.is_finite() && w.point_a.is_finite() && w.point_b.is_finite();
-    // B's lowest point along n, projected on A (a point of A on the axis when A's face holds it).
-    let point_b = *pose * sb.local_support_point(pose.rotation.inverse() * -n);
-    let proj = g.a.project_local_point(point_b, true);
-    let by_b = Witnesses {
-        dist: if proj.is_inside {
-            0.0
-        } else {
-            (point_b - proj.point).length()
-        },
-        normal: n,
-        point_a: proj.point,
-        point_b,
-    };
-    if by_b.dist <= enough && ok(&by_b) {
-        return Some(by_b);
-    }
-    // A's highest point along n, projected on B (B's face holds it): for a polygon B, whose
-    // projection is cheap; a curved B's projection costs a contact query's time.
-    if !g.b_polygonal {
-        return None;
-    }
-    let point_a = sa.local_support_point(n);
-    let local = pose.inverse_transform_point(point_a);
-    let proj = g.b.project_local_point(local, true);
-    let by_a = Witnesses {
-        dist: if proj.is_inside {
-            0.0
-        } else {
-            (local - proj.point).length()
-        },
-        normal: n,
-        point_a,
-        point_b: *pose * proj.point,
-    };
-    (by_a.dist <= enough && ok(&by_a)).then_some(by_a)
 }
 
 /// B's kinematics in A's frame from the two motions (A's spin is 0).
@@ -402,7 +350,7 @@ fn advance(
     t1: Real,
     target: Real,
     tol: Real,
-    mut first: Option<Contact>,
+    start: Start,
 ) -> Option<Found> {
     let mut u = t0;
     // Contacts within `fine` of the target are taken; within `tol`, where the separations make
@@ -410,36 +358,49 @@ fn advance(
     let fine = CROSSING_FRACTION * tol;
     // B's pose at `u`, once placed (the certificate's, then the next contact's).
     let mut pose: Option<Pose> = None;
+    let (mut first, mut axis0) = match start {
+        Start::Contact(c) => (c, None),
+        Start::Axis { n, support } => (None, Some((n, support))),
+    };
     for contacts in 1..=ADVANCE_MAX_CONTACTS {
-        let c = match first.take() {
-            Some(c) => c,
-            None => contact(sa, sb, pose.get_or_insert_with(|| k.pose(u)), NO_SECOND_POINT, None)?,
-        };
-        let gap = c.dist - target;
-        if !gap.is_finite() || (u == t0 && gap <= tol) {
-            // In contact at the start: the caller's rules.
-            return None;
-        }
-        let hit = |at: Witnesses, u: Real, pose: Option<Pose>| Found {
-            status: ToiStatus::Hit,
-            time: u,
-            at: Some(at),
-            pose,
-            rate: lowest_piece(turning, k, at.normal, 0.0, u).1,
-            contacts,
-        };
-        if gap <= fine {
-            return Some(hit(Witnesses::of(&c), u, pose));
-        }
-        // S_n = min over B of n·q − h_A(n), taken below the level δ to far below the tolerance
-        // (Newton's steps: a step or two more than to the tolerance).
-        // At a face of B the axis turns with B (module docs); otherwise it is fixed in A.
-        let axis = match FaceAxis::of(&c, sa, turning, k, u, target) {
-            Some(face) => Axis::Turning(face),
-            None => Axis::Fixed {
-                n: c.normal,
-                level: support_value(sa, &c, c.normal)? + target,
-            },
+        let hit = |at: Witnesses, u: Real, pose: Option<Pose>| hit_found(turning, k, at, u, pose, contacts);
+        let (axis, gap, c) = match axis0.take() {
+            // The caller's separating axis at the start, along which the pair is apart by more
+            // than the tolerance (no contact query): its first crossing, then the certificate
+            // or a contact there, as from a contact's axis.
+            Some((n, support)) => (
+                Axis::Fixed {
+                    n,
+                    level: support + target,
+                },
+                Real::INFINITY,
+                None,
+            ),
+            None => {
+                let c = match first.take() {
+                    Some(c) => c,
+                    None => contact(sa, sb, pose.get_or_insert_with(|| k.pose(u)), NO_SECOND_POINT, None)?,
+                };
+                let gap = c.dist - target;
+                if !gap.is_finite() || (u == t0 && gap <= tol) {
+                    // In contact at the start: the caller's rules.
+                    return None;
+                }
+                if gap <= fine {
+                    return Some(hit(Witnesses::of(&c), u, pose));
+                }
+                // S_n = min over B of n·q − h_A(n), taken below the level δ to far below the
+                // tolerance (Newton's steps: a step or two more than to the tolerance).
+                // At a face of B the axis turns with B (module docs); otherwise it is fixed in A.
+                let axis = match FaceAxis::of(&c, sa, turning, k, u, target) {
+                    Some(face) => Axis::Turning(face),
+                    None => Axis::Fixed {
+                        n: c.normal,
+                        level: support_value(sa, &c, c.normal)? + target,
+                    },
+                };
+                (axis, gap, Some(c))
+            }
         };
         match first_crossing(turning, k, axis, u, t1, fine)? {
             Some(next) if next > u => {
@@ -455,21 +416,38 @@ fn advance(
                     return Some(hit(w, u, Some(at)));
                 }
             }
-            _ if gap <= tol => return Some(hit(Witnesses::of(&c), u, pose)),
+            // (Only after a contact: the caller's axis starts apart by more than `tol`.)
+            _ if gap <= tol => return Some(hit(Witnesses::of(c.as_ref()?), u, pose)),
             Some(_) => return None,
-            None => {
-                return Some(Found {
-                    status: ToiStatus::NoHit,
-                    time: t1,
-                    at: None,
-                    pose: None,
-                    rate: 0.0,
-                    contacts,
-                })
-            }
+            None => return Some(no_hit(t1, contacts)),
         }
     }
     None
+}
+
+/// A hit at clock time `u` with witnesses `at` (B placed at `pose` when known), after
+/// `contacts` iterations: the rate from the lowest piece along the normal.
+fn hit_found(turning: Turning, k: &Kinematics, at: Witnesses, u: Real, pose: Option<Pose>, contacts: usize) -> Found {
+    Found {
+        status: ToiStatus::Hit,
+        time: u,
+        at: Some(at),
+        pose,
+        rate: lowest_piece(turning, k, at.normal, 0.0, u).1,
+        contacts,
+    }
+}
+
+/// No impact up to the window's end `t1`, after `contacts` iterations.
+fn no_hit(t1: Real, contacts: usize) -> Found {
+    Found {
+        status: ToiStatus::NoHit,
+        time: t1,
+        at: None,
+        pose: None,
+        rate: 0.0,
+        contacts,
+    }
 }
 
 /// The contact `c` of body 1 (at the origin) and body 2 (at `pos21`, body 2's pose in body

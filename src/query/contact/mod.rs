@@ -75,7 +75,7 @@ mod side;
 mod two_ellipses;
 mod walk;
 
-pub(crate) use side::SupportShape;
+pub(crate) use side::{SupportShape, MAX_BREAKPOINTS};
 
 use crate::numerics::math::{perp, Pose, Vector};
 use side::Placed;
