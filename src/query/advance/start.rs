@@ -61,3 +61,95 @@ pub(crate) fn face_separation(s1: SupportShape, s2: SupportShape, pair: &PairOnP
     }
     best
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::numerics::math::{perp, Pose};
+    use crate::query::contact::contact;
+    use crate::query::path::OnPath;
+    use crate::MotionPath;
+    use core::f64::consts::PI;
+    use parry2d_f64::query::NonlinearRigidMotion;
+
+    /// The start's separation is a lower bound of the exact signed distance on random poses
+    /// (what makes the advancement from it safe), and equals it where a vertex of the body is
+    /// nearest a face of the target (what makes it the exact contact's own first axis).
+    #[test]
+    fn the_face_separation_bounds_the_distance_and_meets_it_at_a_face() {
+        let hex: Vec<Vector> = (0..6)
+            .map(|i| {
+                let a = i as Real * PI / 3.0;
+                Vector::new(0.5 * a.cos(), 0.3 * a.sin())
+            })
+            .collect();
+        let normals: Vec<Vector> = (0..6).map(|i| -perp(hex[(i + 1) % 6] - hex[i]).normalize()).collect();
+        let box_v = [
+            Vector::new(-1.0, -0.2),
+            Vector::new(1.0, -0.2),
+            Vector::new(1.0, 0.2),
+            Vector::new(-1.0, 0.2),
+        ];
+        let box_n = [-Vector::Y, Vector::X, Vector::Y, -Vector::X];
+        let target = SupportShape::Polygon {
+            vertices: &box_v,
+            normals: &box_n,
+            radius: 0.0,
+        };
+        let bodies = [
+            SupportShape::Polygon {
+                vertices: &hex,
+                normals: &normals,
+                radius: 0.05,
+            },
+            SupportShape::Ellipse(0.6, 0.15),
+        ];
+        let mut rng = crate::numerics::test_rng::Lcg(0x2545_F491_4F6C_DD1Du64);
+        let mut uniform = |lo: Real, hi: Real| rng.range(lo, hi);
+        let (mut cases, mut exact) = (0, 0);
+        for &body in &bodies {
+            for _ in 0..2000 {
+                let start = Pose::new(Vector::new(uniform(-4.0, 4.0), uniform(-4.0, 4.0)), uniform(-3.2, 3.2));
+                let v = Vector::new(uniform(-6.0, 6.0), uniform(-6.0, 6.0));
+                let mb = NonlinearRigidMotion::new(start, Vector::ZERO, v, uniform(-3.0, 3.0));
+                let ma = NonlinearRigidMotion::constant_position(Pose::IDENTITY);
+                let on = OnPath::new(&ma, &mb, 0.0, 1.0, MotionPath::Nlerp).unwrap();
+                let pair = PairOnPath::of(&on).unwrap();
+                let (start, sep) = face_separation(target, body, &pair, 0.0).unwrap();
+                assert!(matches!(start, Start::Axis { .. }));
+                let d = contact(target, body, &pair.k.pose(0.0), 2.0, None).unwrap().dist;
+                assert!(sep <= d + 1e-12, "separation {sep} above the distance {d}");
+                cases += 1;
+                if d - sep <= 1e-12 {
+                    exact += 1;
+                }
+            }
+        }
+        println!("{exact} of {cases} starts at the exact distance");
+        assert!(exact * 4 > cases, "{exact} of {cases}");
+    }
+
+    #[test]
+    fn a_target_without_faces_or_a_polygon_beyond_the_contact_query_has_no_face_start() {
+        let ma = NonlinearRigidMotion::constant_position(Pose::IDENTITY);
+        let mb = NonlinearRigidMotion::new(Pose::new(Vector::new(3.0, 0.0), 0.0), Vector::ZERO, -Vector::X, 1.0);
+        let on = OnPath::new(&ma, &mb, 0.0, 1.0, MotionPath::Nlerp).unwrap();
+        let pair = PairOnPath::of(&on).unwrap();
+        let body = SupportShape::Ellipse(0.5, 0.2);
+        assert!(face_separation(SupportShape::Disc(1.0), body, &pair, 0.0).is_none());
+        let n = MAX_BREAKPOINTS + 1;
+        let v: Vec<Vector> = (0..n)
+            .map(|i| {
+                let a = 2.0 * PI * i as Real / n as Real;
+                Vector::new(a.cos(), a.sin())
+            })
+            .collect();
+        let normals: Vec<Vector> = (0..n).map(|i| -perp(v[(i + 1) % n] - v[i]).normalize()).collect();
+        let big = SupportShape::Polygon {
+            vertices: &v,
+            normals: &normals,
+            radius: 0.0,
+        };
+        assert!(face_separation(big, body, &pair, 0.0).is_none());
+    }
+}
