@@ -148,6 +148,18 @@ impl Core<'_> {
     }
 }
 
+/// The signed distance from `p` to the convex polygon (or segment) with these vertices
+/// (counter-clockwise) and outward edge normals, not dilated ([`Core::distance`]).
+pub(crate) fn polygon_point_distance(vertices: &[Vector], normals: &[Vector], p: Vector) -> Real {
+    Core {
+        vertices,
+        normals,
+        radius: 0.0,
+    }
+    .distance(p)
+    .0
+}
+
 /// The first time in `[0, span]` after the start at which the point p₀ + w·s enters
 /// {sd_K ≤ `grow`} (module docs), from a start outside it; `None` when it does not.
 fn first_entry(core: &Core, p0: Vector, w: Vector, span: Real, grow: Real) -> Option<Real> {
@@ -445,6 +457,65 @@ fn start_contact_answer(
         (a, b) => a.or(b),
     };
     toi_to_parry(Ok(earliest.map(|s| p.start_contact_hit(c, (c.t0 + s).max(nudge)))))
+}
+
+/// Rule 3's core time (`rapier_rule::start_contact_answer`) in closed form: the first time in
+/// `[t0, t1]` at which the disc of radius `radius` about the point moving by `centre` (a
+/// translation: its pose's translation at t = 0 and its velocity) comes down to
+/// `core_level` of its start's signed distance to `target`, which moves by `target_m` without
+/// turning — the same first entry of a point into the target's core grown by the level as a
+/// disc's own casts take ([`level_entry`]). `None` where the target is not a polygon, a segment
+/// or a disc (the caller's level search answers), `Some(None)` when the core does not get
+/// there within the window.
+pub(crate) fn core_entry(
+    centre: &NonlinearRigidMotion,
+    target: &dyn parry2d_f64::shape::Shape,
+    target_m: &NonlinearRigidMotion,
+    radius: Real,
+    (t0, t1): (Real, Real),
+    tol: Real,
+) -> Option<Option<Real>> {
+    // A target that turns, or a pose the contact query would refuse (a rotation that is not
+    // unit), is the caller's level search's.
+    if target_m.angvel != 0.0 || !super::input_guard::pose_ok(&target_m.start) {
+        return None;
+    }
+    let mut scratch = SupportScratch::default();
+    let point = [Vector::ZERO];
+    let core = match support_shape(target, &mut scratch)? {
+        SupportShape::Polygon {
+            vertices,
+            normals,
+            radius,
+        } if normals.len() == vertices.len() => Core {
+            vertices,
+            normals,
+            radius,
+        },
+        SupportShape::Disc(radius) => Core {
+            vertices: &point,
+            normals: &[],
+            radius,
+        },
+        _ => return None,
+    };
+    let inv = target_m.start.rotation.inverse();
+    let w = inv * (centre.linvel - target_m.linvel);
+    let p0 = inv * (centre.start.translation - target_m.start.translation) + w * t0;
+    let p = DiscPair {
+        core,
+        rho: 0.0,
+        p0,
+        w,
+        rotation2: target_m.start.rotation,
+    };
+    let seen = core.distance(p0);
+    let start = seen.0 - radius - core.radius;
+    if !(start.is_finite() && w.is_finite()) {
+        return None;
+    }
+    let reach = radius + core_level(Some(start), radius, tol);
+    Some(level_entry(&p, p0, seen, reach, t1 - t0, tol).map(|s| t0 + s))
 }
 
 /// The first time after the start (as an offset) at which the point `p0` (from which the core
