@@ -96,6 +96,40 @@ struct Core<'a> {
     radius: Real,
 }
 
+/// The one vertex of a disc's core: its centre.
+const CENTRE: [Vector; 1] = [Vector::ZERO];
+
+impl<'a> Core<'a> {
+    /// The core of `target` as the contact query reads it (`support_shape`, its vertices written
+    /// to `scratch` where it has no stored ones): a polygon or a segment with its normals, a
+    /// disc (parry's `Ball`, an `Ellipse` with equal semi-axes) as its centre; `None` for any
+    /// other shape.
+    fn of(target: &'a dyn parry2d_f64::shape::Shape, scratch: &'a mut SupportScratch) -> Option<Self> {
+        match support_shape(target, scratch)? {
+            SupportShape::Polygon {
+                vertices,
+                normals,
+                radius,
+            } if normals.len() == vertices.len() => Some(Core {
+                vertices,
+                normals,
+                radius,
+            }),
+            SupportShape::Disc(radius) => Some(Core {
+                vertices: &CENTRE,
+                normals: &[],
+                radius,
+            }),
+            SupportShape::Ellipse(a, b) if a == b => Some(Core {
+                vertices: &CENTRE,
+                normals: &[],
+                radius: a,
+            }),
+            _ => None,
+        }
+    }
+}
+
 impl Core<'_> {
     /// The signed distance from `p` to the core (not its dilation), the core's point nearest to
     /// `p` and the unit normal from it towards `p` (outward: inside, the normal of the nearest
@@ -253,29 +287,7 @@ pub(crate) fn disc_cast(
         return None;
     }
     let mut scratch = SupportScratch::default();
-    let point = [Vector::ZERO];
-    let core = match support_shape(c.g2, &mut scratch)? {
-        SupportShape::Polygon {
-            vertices,
-            normals,
-            radius,
-        } if normals.len() == vertices.len() => Core {
-            vertices,
-            normals,
-            radius,
-        },
-        SupportShape::Disc(radius) => Core {
-            vertices: &point,
-            normals: &[],
-            radius,
-        },
-        SupportShape::Ellipse(a, b) if a == b => Core {
-            vertices: &point,
-            normals: &[],
-            radius: a,
-        },
-        _ => return None,
-    };
+    let core = Core::of(c.g2, &mut scratch)?;
     let p = DiscPair::new(c, core, rho);
     // The core seen from the disc's centre at the start: the start's distance, and the start
     // of both of rule 3's searches (read once).
@@ -465,7 +477,7 @@ fn start_contact_answer(
 /// `core_level` of its start's signed distance to `target`, which moves by `target_m` without
 /// turning — the same first entry of a point into the target's core grown by the level as a
 /// disc's own casts take ([`level_entry`]). `None` where the target is not a polygon, a segment
-/// or a disc (the caller's level search answers), `Some(None)` when the core does not get
+/// or a disc ([`Core::of`]; the caller's level search answers), `Some(None)` when the core does not get
 /// there within the window.
 pub(crate) fn core_entry(
     centre: &NonlinearRigidMotion,
@@ -481,24 +493,7 @@ pub(crate) fn core_entry(
         return None;
     }
     let mut scratch = SupportScratch::default();
-    let point = [Vector::ZERO];
-    let core = match support_shape(target, &mut scratch)? {
-        SupportShape::Polygon {
-            vertices,
-            normals,
-            radius,
-        } if normals.len() == vertices.len() => Core {
-            vertices,
-            normals,
-            radius,
-        },
-        SupportShape::Disc(radius) => Core {
-            vertices: &point,
-            normals: &[],
-            radius,
-        },
-        _ => return None,
-    };
+    let core = Core::of(target, &mut scratch)?;
     let inv = target_m.start.rotation.inverse();
     let w = inv * (centre.linvel - target_m.linvel);
     let p0 = inv * (centre.start.translation - target_m.start.translation) + w * t0;
