@@ -7,7 +7,7 @@
 //! closed form first (`disc_cast`: its centre's straight path against the grown target).
 
 use super::composite::composite_cast_nonlinear;
-use super::disc_cast::disc_cast;
+use super::disc_cast::{disc_cast, polygon_point_distance};
 use super::input_guard;
 use super::parry_fallback::parry_nonlinear_without_stop;
 use super::parry_fallback::{parry_cast_nonlinear, size_of_radii};
@@ -16,7 +16,7 @@ use super::route::{curves_toi, pair_distance, route_cast, CurveOf, Route, RouteS
 use super::support_shape::{exact_contact_of, support_shape, SupportScratch};
 use super::SmoothDispatcher;
 use crate::error::QueryError;
-use crate::numerics::math::{Pose, Real};
+use crate::numerics::math::{Pose, Real, Vector};
 use crate::numerics::motion::motion_is_finite;
 use crate::query::advance::{advance_time_of_impact, certified_miss, face_separation, Advance, PairOnPath, Start};
 use crate::query::contact::SupportShape;
@@ -427,7 +427,7 @@ fn rapier_fast_path(
     // The pair on its path (B's kinematics in A's frame), computed once for the certified miss
     // and the advancement; `None` where the advancement declines (both bodies turn).
     let pair = || PairOnPath::of(&OnPath::new(c.m1, c.m2, c.t0, c.t1, opts.path).ok()?);
-    let try_miss = gap > 0.0 && input_guard::pose_ok(&pos12) && centres_ok(c);
+    let try_miss = (gap > 0.0 || polygon_gap(c, s1, s2, &pos12) > 0.0) && input_guard::pose_ok(&pos12) && centres_ok(c);
     let frame = if try_miss { pair() } else { None };
     if let Some(f) = &frame {
         if certified_miss(s1, s2, f, c.t0, c.t1, miss_level(c, opts)) {
@@ -511,6 +511,38 @@ fn sphere_gap(c: &NonlinearCast) -> Real {
     let (p1, r1) = at(c.m1, &c.spheres[0]);
     let (p2, r2) = at(c.m2, &c.spheres[1]);
     (p2 - p1).length() - r1 - r2
+}
+
+/// A lower bound of the signed distance of the cast's shapes at its start where one of them is
+/// a polygon (a segment, a wall, a box), when the bounding spheres say nothing (a long wall's
+/// sphere holds everything near it): every point of the other body is within R = r + |s − c| of
+/// its rotation centre c ([`sphere_gap`]), so the shapes are at least sd(c) − ρ − R apart, sd
+/// the signed distance from c to the polygon's core and ρ its radius. Taken for the shape that
+/// stays put (rapier's target); −∞ when it is not a polygon or both shapes move.
+fn polygon_gap(c: &NonlinearCast, s1: SupportShape, s2: SupportShape, pos12: &Pose) -> Real {
+    let reach = |m: &NonlinearRigidMotion, s: &BoundingSphere| s.radius + (s.center - m.local_center).length();
+    let gap = |poly: SupportShape, centre: Vector, other_reach: Real| match poly {
+        SupportShape::Polygon {
+            vertices,
+            normals,
+            radius,
+        } => polygon_point_distance(vertices, normals, centre) - radius - other_reach,
+        _ => Real::NEG_INFINITY,
+    };
+    // The side that stays put (rapier's target): body 1's rotation centre in shape 2's frame,
+    // or body 2's in shape 1's.
+    let still = |m: &NonlinearRigidMotion| m.linvel == Vector::ZERO && m.angvel == 0.0;
+    if still(c.m2) {
+        gap(
+            s2,
+            pos12.inverse_transform_point(c.m1.local_center),
+            reach(c.m1, &c.spheres[0]),
+        )
+    } else if still(c.m1) {
+        gap(s1, *pos12 * c.m2.local_center, reach(c.m2, &c.spheres[1]))
+    } else {
+        Real::NEG_INFINITY
+    }
 }
 
 /// The first time the signed distance of the cast's shapes moving by `m1`, `m2` comes down to
@@ -666,5 +698,69 @@ mod tests {
         }
         println!("{compared} poses compared on the routes {routes:?}");
         assert!(compared > 5000 && routes.len() == 2, "{compared} {routes:?}");
+    }
+
+    /// The polygon gap is a lower bound of the exact signed distance of a body and a still
+    /// polygonal target (a long wall, whose bounding sphere holds every body near it), and it
+    /// sees bodies apart that the bounding spheres cannot: random poses and local centres of
+    /// every body kind against segments, a thin box and a capsule.
+    #[test]
+    fn the_polygon_gap_bounds_the_distance_where_the_spheres_do_not() {
+        use parry2d_f64::shape::{Capsule, Segment};
+        let bodies: Vec<Box<dyn Shape>> = vec![
+            Box::new(Ellipse::new(0.5, 0.2)),
+            Box::new(Ellipse::new(0.3, 0.3)),
+            Box::new(CapsuleEllipse::new(0.3, 0.2, 0.4)),
+            Box::new(RoundedPolygon::regular(5, 0.4, 0.05)),
+            Box::new(RoundedPolygon::regular(4, 0.35, 0.0)),
+        ];
+        let targets: Vec<Box<dyn Shape>> = vec![
+            Box::new(Segment::new(Vector::new(-5.0, 0.0), Vector::new(5.0, 0.0))),
+            Box::new(Segment::new(Vector::new(-0.2, -3.0), Vector::new(0.3, 4.0))),
+            Box::new(Cuboid::new(Vector::new(4.0, 0.025))),
+            Box::new(Capsule::new(Vector::new(-3.0, 0.5), Vector::new(3.0, -0.5), 0.1)),
+        ];
+        let mut rng = crate::numerics::test_rng::Lcg(0x5DEE_CE66_D1CE_4E5Bu64);
+        let mut uniform = |lo: f64, hi: f64| rng.range(lo, hi);
+        let (mut cases, mut seen_apart, mut spheres_blind) = (0, 0, 0);
+        for body in &bodies {
+            for target in &targets {
+                for _ in 0..400 {
+                    let lc = Vector::new(uniform(-0.1, 0.1), uniform(-0.1, 0.1));
+                    let start = Pose::new(Vector::new(uniform(-5.0, 5.0), uniform(-2.0, 2.0)), uniform(-3.2, 3.2));
+                    let m1 = NonlinearRigidMotion::new(
+                        start,
+                        lc,
+                        Vector::new(uniform(-9.0, 9.0), uniform(-9.0, 9.0)),
+                        uniform(-9.0, 9.0),
+                    );
+                    let pose2 = Pose::new(Vector::new(uniform(-0.5, 0.5), uniform(-0.5, 0.5)), uniform(-0.3, 0.3));
+                    let m2 = NonlinearRigidMotion::constant_position(pose2);
+                    let c = NonlinearCast::new(&m1, &**body, &m2, &**target, (0.0, 1.0 / 60.0), false);
+                    let (mut st1, mut st2) = (SupportScratch::default(), SupportScratch::default());
+                    let s1 = support_shape(&**body, &mut st1).unwrap();
+                    let s2 = support_shape(&**target, &mut st2).unwrap();
+                    let pos12 = pos12_at(&m1, &m2, 0.0);
+                    let gap = polygon_gap(&c, s1, s2, &pos12);
+                    let d = exact_contact(&pos12, &**body, &**target, None).unwrap().dist;
+                    assert!(
+                        gap <= d + 1e-12,
+                        "{:?}: gap {gap} above the distance {d}",
+                        body.shape_type()
+                    );
+                    cases += 1;
+                    if gap > 0.0 {
+                        seen_apart += 1;
+                        if sphere_gap(&c) <= 0.0 {
+                            spheres_blind += 1;
+                        }
+                    }
+                }
+            }
+        }
+        println!(
+            "{cases} poses: {seen_apart} seen apart by the polygon gap, {spheres_blind} of them not by the spheres"
+        );
+        assert!(spheres_blind * 4 > cases, "{spheres_blind} of {cases}");
     }
 }

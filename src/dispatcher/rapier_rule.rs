@@ -333,7 +333,12 @@ pub(crate) fn start_contact_answer(
             ..*opts
         };
         let general = || super::cast::shape_time_of_impact(&core, &centre, f.other_g, f.other_m, c.t0, c.t1, &plain);
-        if f.other_m.angvel == 0.0 {
+        // A point (the core's centre) entering a polygon or a disc grown by the core's radius
+        // and level, in closed form (`disc_cast::core_entry`); other targets by the level
+        // search of the translating core, or by the general cast when the target turns.
+        if let Some(t) = super::disc_cast::core_entry(&centre, f.other_g, f.other_m, core.radius, (c.t0, c.t1), tol) {
+            Ok(t)
+        } else if f.other_m.angvel == 0.0 {
             let p = Translating {
                 g1: &core,
                 m1: &centre,

@@ -96,6 +96,40 @@ struct Core<'a> {
     radius: Real,
 }
 
+/// The one vertex of a disc's core: its centre.
+const CENTRE: [Vector; 1] = [Vector::ZERO];
+
+impl<'a> Core<'a> {
+    /// The core of `target` as the contact query reads it (`support_shape`, its vertices written
+    /// to `scratch` where it has no stored ones): a polygon or a segment with its normals, a
+    /// disc (parry's `Ball`, an `Ellipse` with equal semi-axes) as its centre; `None` for any
+    /// other shape.
+    fn of(target: &'a dyn parry2d_f64::shape::Shape, scratch: &'a mut SupportScratch) -> Option<Self> {
+        match support_shape(target, scratch)? {
+            SupportShape::Polygon {
+                vertices,
+                normals,
+                radius,
+            } if normals.len() == vertices.len() => Some(Core {
+                vertices,
+                normals,
+                radius,
+            }),
+            SupportShape::Disc(radius) => Some(Core {
+                vertices: &CENTRE,
+                normals: &[],
+                radius,
+            }),
+            SupportShape::Ellipse(a, b) if a == b => Some(Core {
+                vertices: &CENTRE,
+                normals: &[],
+                radius: a,
+            }),
+            _ => None,
+        }
+    }
+}
+
 impl Core<'_> {
     /// The signed distance from `p` to the core (not its dilation), the core's point nearest to
     /// `p` and the unit normal from it towards `p` (outward: inside, the normal of the nearest
@@ -146,6 +180,18 @@ impl Core<'_> {
         let normal = if d > 0.0 { (p - nearest.1) / d } else { Vector::X };
         (d, nearest.1, normal)
     }
+}
+
+/// The signed distance from `p` to the convex polygon (or segment) with these vertices
+/// (counter-clockwise) and outward edge normals, not dilated ([`Core::distance`]).
+pub(crate) fn polygon_point_distance(vertices: &[Vector], normals: &[Vector], p: Vector) -> Real {
+    Core {
+        vertices,
+        normals,
+        radius: 0.0,
+    }
+    .distance(p)
+    .0
 }
 
 /// The first time in `[0, span]` after the start at which the point p₀ + w·s enters
@@ -241,29 +287,7 @@ pub(crate) fn disc_cast(
         return None;
     }
     let mut scratch = SupportScratch::default();
-    let point = [Vector::ZERO];
-    let core = match support_shape(c.g2, &mut scratch)? {
-        SupportShape::Polygon {
-            vertices,
-            normals,
-            radius,
-        } if normals.len() == vertices.len() => Core {
-            vertices,
-            normals,
-            radius,
-        },
-        SupportShape::Disc(radius) => Core {
-            vertices: &point,
-            normals: &[],
-            radius,
-        },
-        SupportShape::Ellipse(a, b) if a == b => Core {
-            vertices: &point,
-            normals: &[],
-            radius: a,
-        },
-        _ => return None,
-    };
+    let core = Core::of(c.g2, &mut scratch)?;
     let p = DiscPair::new(c, core, rho);
     // The core seen from the disc's centre at the start: the start's distance, and the start
     // of both of rule 3's searches (read once).
@@ -445,6 +469,48 @@ fn start_contact_answer(
         (a, b) => a.or(b),
     };
     toi_to_parry(Ok(earliest.map(|s| p.start_contact_hit(c, (c.t0 + s).max(nudge)))))
+}
+
+/// Rule 3's core time (`rapier_rule::start_contact_answer`) in closed form: the first time in
+/// `[t0, t1]` at which the disc of radius `radius` about the point moving by `centre` (a
+/// translation: its pose's translation at t = 0 and its velocity) comes down to
+/// `core_level` of its start's signed distance to `target`, which moves by `target_m` without
+/// turning — the same first entry of a point into the target's core grown by the level as a
+/// disc's own casts take ([`level_entry`]). `None` where the target is not a polygon, a segment
+/// or a disc ([`Core::of`]; the caller's level search answers), `Some(None)` when the core does not get
+/// there within the window.
+pub(crate) fn core_entry(
+    centre: &NonlinearRigidMotion,
+    target: &dyn parry2d_f64::shape::Shape,
+    target_m: &NonlinearRigidMotion,
+    radius: Real,
+    (t0, t1): (Real, Real),
+    tol: Real,
+) -> Option<Option<Real>> {
+    // A target that turns, or a pose the contact query would refuse (a rotation that is not
+    // unit), is the caller's level search's.
+    if target_m.angvel != 0.0 || !super::input_guard::pose_ok(&target_m.start) {
+        return None;
+    }
+    let mut scratch = SupportScratch::default();
+    let core = Core::of(target, &mut scratch)?;
+    let inv = target_m.start.rotation.inverse();
+    let w = inv * (centre.linvel - target_m.linvel);
+    let p0 = inv * (centre.start.translation - target_m.start.translation) + w * t0;
+    let p = DiscPair {
+        core,
+        rho: 0.0,
+        p0,
+        w,
+        rotation2: target_m.start.rotation,
+    };
+    let seen = core.distance(p0);
+    let start = seen.0 - radius - core.radius;
+    if !(start.is_finite() && w.is_finite()) {
+        return None;
+    }
+    let reach = radius + core_level(Some(start), radius, tol);
+    Some(level_entry(&p, p0, seen, reach, t1 - t0, tol).map(|s| t0 + s))
 }
 
 /// The first time after the start (as an offset) at which the point `p0` (from which the core

@@ -494,3 +494,93 @@ fn a_disc_centred_on_a_boxs_corner_edge_or_centre_answers_as_the_general_path() 
     assert_eq!(tally.apart_hits + tally.apart_misses, 0, "{tally:?}");
     assert!(tally.contact_hits > 0 && tally.contact_misses > 0, "{tally:?}");
 }
+
+/// Rule 3's core time in closed form (`core_entry`) is the time the level search of the
+/// translating core answered before it (`translation_time_to_level` on a `Ball` of the core's
+/// radius, its level from the exact contact at the window's start): the same hits to the
+/// search's distance tolerance, the same misses, on random cores (apart, touching, inside)
+/// against every target the closed form reads, the target translating without a turn, windows
+/// starting anywhere (a disc given as an `Ellipse` with equal semi-axes among them).
+#[test]
+fn the_cores_closed_form_time_is_the_level_searchs() {
+    use crate::dispatcher::rapier_rule::core_level;
+    use crate::dispatcher::support_shape::exact_contact;
+    use crate::dispatcher::translation_level::{translation_time_to_level, LevelTime, Translating};
+    let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
+    let (mut cases, mut hits, mut worst) = (0, 0, 0.0f64);
+    for target in targets() {
+        let sphere = target.compute_local_bounding_sphere();
+        for _ in 0..1500 {
+            let radius = rng.uniform(0.01, 0.3);
+            // The core's centre near the target, touching it or in it one time in three.
+            let dir = rng.direction();
+            let along = sphere.radius * rng.uniform(0.0, 1.2) + radius * rng.uniform(-1.0, 1.5);
+            let centre0 = sphere.center + dir * along;
+            let speed = rng.uniform(0.0, 8.0);
+            let centre = NonlinearRigidMotion::new(
+                Pose::from_translation(centre0),
+                Vector::ZERO,
+                rng.direction() * speed,
+                0.0,
+            );
+            let pose2 = Pose::new(
+                Vector::new(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0)),
+                rng.uniform(-3.2, 3.2),
+            );
+            let target_m = NonlinearRigidMotion::new(pose2, Vector::ZERO, rng.direction() * rng.uniform(0.0, 2.0), 0.0);
+            // The centre given in the world: place it relative to the target's pose.
+            let centre = NonlinearRigidMotion {
+                start: Pose::from_translation(pose2 * centre.start.translation),
+                ..centre
+            };
+            let t0 = rng.uniform(-0.5, 0.5);
+            let t1 = t0 + rng.uniform(0.01, 1.0);
+            let tol = 1e-9 * (sphere.radius + radius);
+            let closed = core_entry(&centre, target.as_ref(), &target_m, radius, (t0, t1), tol);
+            let core = Ball::new(radius);
+            let pos12 = crate::dispatcher::cast::pos12_at(&centre, &target_m, t0);
+            let k = exact_contact(&pos12, &core, target.as_ref(), None);
+            let level = core_level(k.map(|k| k.dist), radius, tol);
+            let p = Translating {
+                g1: &core,
+                m1: &centre,
+                g2: target.as_ref(),
+                m2: &target_m,
+            };
+            let searched = match translation_time_to_level(&p, t0, t1, level, tol, k) {
+                LevelTime::Reached(t) | LevelTime::Capped(t) => Some(t),
+                LevelTime::Never => None,
+                LevelTime::Unread => panic!("the search reads every target here"),
+            };
+            let closed = closed.expect("the closed form reads this target");
+            cases += 1;
+            match (closed, searched) {
+                (Some(a), Some(b)) => {
+                    hits += 1;
+                    // The search stops within the tolerance above the level, coming from the
+                    // left; the closed form is the crossing itself (or the start).
+                    let d = |t: Real| {
+                        let pos12 = crate::dispatcher::cast::pos12_at(&centre, &target_m, t);
+                        exact_contact(&pos12, &core, target.as_ref(), None).unwrap().dist - level
+                    };
+                    let (da, db) = (d(a), d(b));
+                    if a == t0 && b == t0 {
+                        // Both at the start: at or below the level there, coming closer.
+                        assert!(da <= tol);
+                        continue;
+                    }
+                    worst = worst.max(db.abs() / tol);
+                    assert!(da.abs() <= 1e-3 * tol, "closed {a}: {da} off the level");
+                    assert!(
+                        b <= a + 1e-12 && db.abs() <= 2.0 * tol,
+                        "closed {a}, searched {b} ({db} off the level)"
+                    );
+                }
+                (None, None) => {}
+                (a, b) => panic!("closed form {a:?}, level search {b:?}"),
+            }
+        }
+    }
+    println!("{cases} core times, {hits} hits, the search at most {worst:.3} of its tolerance off the level");
+    assert!(hits * 5 > cases, "{hits} hits of {cases}");
+}
