@@ -62,6 +62,8 @@ mod project;
 mod start;
 mod support_run;
 mod swept;
+#[cfg(test)]
+mod test_shapes;
 
 pub(crate) use start::{face_separation, Start};
 pub(crate) use swept::certified_miss;

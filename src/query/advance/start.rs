@@ -66,6 +66,7 @@ pub(crate) fn face_separation(s1: SupportShape, s2: SupportShape, pair: &PairOnP
 mod tests {
     use super::*;
     use crate::numerics::math::{perp, Pose};
+    use crate::query::advance::test_shapes::{random_pair, TestShapes};
     use crate::query::contact::contact;
     use crate::query::path::OnPath;
     use crate::MotionPath;
@@ -77,44 +78,15 @@ mod tests {
     /// nearest a face of the target (what makes it the exact contact's own first axis).
     #[test]
     fn the_face_separation_bounds_the_distance_and_meets_it_at_a_face() {
-        let hex: Vec<Vector> = (0..6)
-            .map(|i| {
-                let a = i as Real * PI / 3.0;
-                Vector::new(0.5 * a.cos(), 0.3 * a.sin())
-            })
-            .collect();
-        let normals: Vec<Vector> = (0..6).map(|i| -perp(hex[(i + 1) % 6] - hex[i]).normalize()).collect();
-        let box_v = [
-            Vector::new(-1.0, -0.2),
-            Vector::new(1.0, -0.2),
-            Vector::new(1.0, 0.2),
-            Vector::new(-1.0, 0.2),
-        ];
-        let box_n = [-Vector::Y, Vector::X, Vector::Y, -Vector::X];
-        let target = SupportShape::Polygon {
-            vertices: &box_v,
-            normals: &box_n,
-            radius: 0.0,
-        };
-        let bodies = [
-            SupportShape::Polygon {
-                vertices: &hex,
-                normals: &normals,
-                radius: 0.05,
-            },
-            SupportShape::Ellipse(0.6, 0.15),
-        ];
+        let shapes = TestShapes::new();
+        let target = shapes.flat_box();
+        let bodies = shapes.bodies();
         let mut rng = crate::numerics::test_rng::Lcg(0x2545_F491_4F6C_DD1Du64);
         let mut uniform = |lo: Real, hi: Real| rng.range(lo, hi);
         let (mut cases, mut exact) = (0, 0);
         for &body in &bodies {
             for _ in 0..2000 {
-                let start = Pose::new(Vector::new(uniform(-4.0, 4.0), uniform(-4.0, 4.0)), uniform(-3.2, 3.2));
-                let v = Vector::new(uniform(-6.0, 6.0), uniform(-6.0, 6.0));
-                let mb = NonlinearRigidMotion::new(start, Vector::ZERO, v, uniform(-3.0, 3.0));
-                let ma = NonlinearRigidMotion::constant_position(Pose::IDENTITY);
-                let on = OnPath::new(&ma, &mb, 0.0, 1.0, MotionPath::Nlerp).unwrap();
-                let pair = PairOnPath::of(&on).unwrap();
+                let (_, pair) = random_pair(&mut uniform, None);
                 let (start, sep) = face_separation(target, body, &pair, 0.0).unwrap();
                 assert!(matches!(start, Start::Axis { .. }));
                 let d = contact(target, body, &pair.k.pose(0.0), 2.0, None).unwrap().dist;

@@ -218,60 +218,24 @@ fn sweep_of<'a>(body: SupportShape<'a>, k: &Kinematics, t0: Real, t1: Real) -> O
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::numerics::math::Pose;
+    use crate::query::advance::test_shapes::{random_pair, TestShapes};
     use crate::query::contact::contact;
-    use crate::query::path::OnPath;
-    use crate::MotionPath;
-    use parry2d_f64::query::NonlinearRigidMotion;
 
     /// A certified miss is a miss: wherever the bounds answer one, the exact distance sampled
     /// densely on the nlerp path stays above the level; and the bounds do certify most of the
     /// pairs passing well clear of each other.
     #[test]
     fn certified_misses_stay_above_the_level_on_the_path() {
-        let hex: Vec<Vector> = (0..6)
-            .map(|i| {
-                let a = i as Real * PI / 3.0;
-                Vector::new(0.5 * a.cos(), 0.3 * a.sin())
-            })
-            .collect();
-        let normals: Vec<Vector> = (0..6).map(|i| -perp(hex[(i + 1) % 6] - hex[i]).normalize()).collect();
-        let box_v = [
-            Vector::new(-1.0, -0.2),
-            Vector::new(1.0, -0.2),
-            Vector::new(1.0, 0.2),
-            Vector::new(-1.0, 0.2),
-        ];
-        let box_n = [-Vector::Y, Vector::X, Vector::Y, -Vector::X];
-        let bodies = [
-            SupportShape::Polygon {
-                vertices: &hex,
-                normals: &normals,
-                radius: 0.05,
-            },
-            SupportShape::Ellipse(0.6, 0.15),
-        ];
-        let targets = [
-            SupportShape::Polygon {
-                vertices: &box_v,
-                normals: &box_n,
-                radius: 0.0,
-            },
-            SupportShape::Disc(0.4),
-        ];
+        let shapes = TestShapes::new();
+        let bodies = shapes.bodies();
+        let targets = [shapes.flat_box(), SupportShape::Disc(0.4)];
         let mut rng = crate::numerics::test_rng::Lcg(0x9E37_79B9_7F4A_7C15u64);
         let mut uniform = |lo: Real, hi: Real| rng.range(lo, hi);
         let (level, mut certified, mut cases) = (1e-3, 0, 0);
         for &sa in &targets {
             for &sb in &bodies {
                 for _ in 0..400 {
-                    let start = Pose::new(Vector::new(uniform(-4.0, 4.0), uniform(-4.0, 4.0)), uniform(-3.2, 3.2));
-                    let v = Vector::new(uniform(-6.0, 6.0), uniform(-6.0, 6.0));
-                    let centre = Vector::new(uniform(-0.1, 0.1), uniform(-0.1, 0.1));
-                    let mb = NonlinearRigidMotion::new(start, centre, v, uniform(-3.0, 3.0));
-                    let ma = NonlinearRigidMotion::constant_position(Pose::IDENTITY);
-                    let on = OnPath::new(&ma, &mb, 0.0, 1.0, MotionPath::Nlerp).unwrap();
-                    let pair = PairOnPath::of(&on).unwrap();
+                    let (mb, pair) = random_pair(&mut uniform, Some(0.1));
                     cases += 1;
                     if !certified_miss(sa, sb, &pair, 0.0, 1.0, level) {
                         continue;
