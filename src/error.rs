@@ -206,7 +206,9 @@ pub enum QueryError {
     /// Every input is finite but a shape or a pose evaluated to a non-finite value: positions so
     /// large, or motions travelling so far in the window, that they overflow (beyond about
     /// 1e150; rates alone do not: the times of impact rescale time for rates beyond 2^±64 per
-    /// second), a [`crate::BallCurve`] built with a non-finite or non-positive radius (its field
+    /// second, unless the answer's own rate of distance passes f64's range, as a half-space
+    /// spun at 5e301 rad/s does 5e6 m from its centre), a [`crate::BallCurve`] built with a
+    /// non-finite or non-positive radius (its field
     /// is public), a user curve that returns NaN between the points its checks sampled, or whose
     /// `support_jet` fails there. The crate's own constructors refuse the lengths that would do
     /// this ([`crate::MIN_LENGTH`], [`crate::MAX_LENGTH`]).

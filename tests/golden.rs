@@ -298,16 +298,37 @@ const FUZZ_CASES: u64 = 40_000;
 /// window, where the search in the cancelled frame answered the start). Before: `extreme-scale`
 /// 0x30D0E4CBE516960A, `parry-pair` 0x246855CE608DF916, `random` 0x6FDA1BB18B46F6B2, `wild`
 /// 0xD70FA1D612219159.
+///
+/// Re-recorded for two wrong answers the adversarial fuzz found with new seeds. (1) Seed
+/// 20261127: a start contact of rapier's policies answered at a time the motions reach only by
+/// overflowing came out with a NaN normal, or with zero witnesses and normal (1, 0) where only
+/// the translation overflows; `rapier_rule::hit_at` now answers `Degenerate` there and the
+/// dispatcher's casts refuse any hit holding a non-finite number (`Unsupported`, as the other
+/// routes answer such motions). In this batch 2 `wild` casts had answered such a made-up hit:
+/// case 24914 (a half-space at −1.8e308 m/s over 1e300 s, "hit" at 1e291) and case 39224 (a
+/// half-space with its local centre at −1.8e308, "hit" at 1e-9). (2) Seed 31337: the φ–t
+/// tracker claimed a contact from a point accepted loosely, |S| = 0.42, where F is only a lower
+/// bound on the distance (a thin `CapsuleEllipse` against a 1:8000 ellipse: "hit" at 0.944914,
+/// the distance there 4.3e-4 of a size of 0.23; the reference's first touch 0.9455397037488924,
+/// now found to 2e-14); a contact is now claimed only from a point corrected to the side
+/// tolerance, else the global distance decides (`Tracker::certified_contact`). In this batch 88
+/// cases met a contact at a loosely accepted point (`thin-ellipse` 79, `extreme-scale` 8,
+/// `wild` 1): every status the same, every time of `time_of_impact` and of the casts within
+/// 2.7e-16 of the window, the distances and witnesses at the hit those of the point corrected
+/// to the side tolerance (the distance at a hit of `time_of_impact` moved by at most 1.5e-15
+/// of the size). Before:
+/// `extreme-scale` 0x27D1511097C62ACE, `thin-ellipse` 0x1C2EE99010EB45BC, `wild`
+/// 0xD8960DBF616AD8C8.
 const FUZZ_DIGESTS: [(&str, u64); 9] = [
     ("coincident", 0xD05246972C0DC0FE),
     ("concentric", 0x1BE68FCFC7C08452),
-    ("extreme-scale", 0x27D1511097C62ACE),
+    ("extreme-scale", 0xDA5D7A91CB5CC4BD),
     ("grazing", 0x09E5F3BA3F2A2824),
     ("parry-pair", 0x30252518B6022B3F),
     ("random", 0xF142B9BEC801D6D5),
-    ("thin-ellipse", 0x1C2EE99010EB45BC),
+    ("thin-ellipse", 0x9188AEB36CEE1130),
     ("touching-at-t0", 0x95DF4EF2FB2B9A38),
-    ("wild", 0xD8960DBF616AD8C8),
+    ("wild", 0x42A52D722DEFD56D),
 ];
 
 /// Final-state hash of the rapier scene (re-recorded with issue 17: the CCD casts between its

@@ -620,6 +620,137 @@ fn non_finite_pose_is_unsupported_in_every_dispatcher_query() {
     println!("non-finite poses: {checked} queries, each Err(Unsupported)");
 }
 
+/// Found by the adversarial fuzz with seed 20261127 (case 75845): under rapier's policies a pair
+/// in contact at the start is answered at a nudge of the window past its start, with the pair's
+/// contact there for witnesses; a spin of 1e160 rad/s over a window of 1e300 s reaches that
+/// time only by overflowing, and the hit came out with zero witnesses and a NaN normal. Every
+/// cast of a pair touching at the start, every pair kind and policy, spins and windows whose
+/// product overflows: `Err(Unsupported)` or a hit whose every number is finite.
+#[test]
+fn start_contact_at_a_time_the_motions_overflow_to_is_unsupported_never_nan() {
+    use smooth_ccd2d::CastPolicy;
+    let shapes: Vec<SharedShape> = vec![
+        SharedShape::new(RoundedPolygon::regular(12, 0.0052, 0.0013)),
+        SharedShape::new(RoundedPolygon::regular(4, 0.006, 0.0)),
+        SharedShape::new(Ellipse::new(0.0011, 0.0118)),
+        SharedShape::new(Ellipse::new(0.005, 0.005)),
+        SharedShape::new(CapsuleEllipse::new(0.003, 0.004, 0.006)),
+        SharedShape::new(Ball::new(0.005)),
+        SharedShape::new(Cuboid::new(Vector::new(0.004, 0.006))),
+        SharedShape::new(parry2d_f64::shape::Segment::new(
+            Vector::new(-0.01, 0.0),
+            Vector::new(0.01, 0.0),
+        )),
+        SharedShape::new(Capsule::new_y(0.003, 0.002)),
+    ];
+    let pose2 = Pose::from_parts(
+        Vector::new(-0.0012, -0.0021),
+        parry2d_f64::math::Rotation::from_cos_sin_unchecked(-0.003136167043825366, -0.9999950822160443),
+    );
+    let (mut casts, mut refused) = (0, 0);
+    for policy in [CastPolicy::Rapier, CastPolicy::RapierConstantSpin, CastPolicy::Plain] {
+        let d = SmoothDispatcher::default().with_cast_policy(policy);
+        for g1 in &shapes {
+            for g2 in &shapes {
+                for (w1, w2, t1) in [(1e160, -19.9, 1e300), (0.0, 1e160, 1e200), (1e160, 0.0, 1e200)] {
+                    let m1 = NonlinearRigidMotion::new(Pose::IDENTITY, Vector::ZERO, Vector::new(-0.011, 0.005), w1);
+                    let m2 = NonlinearRigidMotion::new(pose2, Vector::ZERO, Vector::new(0.0034, 0.0007), w2);
+                    for stop in [false, true] {
+                        let r = d.cast_shapes_nonlinear(&m1, &**g1, &m2, &**g2, 0.0, t1, stop);
+                        casts += 1;
+                        match r {
+                            Err(_) => refused += 1,
+                            Ok(None) => {}
+                            Ok(Some(h)) => assert!(
+                                h.time_of_impact.is_finite()
+                                    && h.witness1.is_finite()
+                                    && h.witness2.is_finite()
+                                    && h.normal1.is_finite()
+                                    && h.normal2.is_finite(),
+                                "{policy:?} {:?} against {:?}, spins {w1:e} and {w2:e} over [0, {t1:e}]: {h:?}",
+                                g1.shape_type(),
+                                g2.shape_type(),
+                            ),
+                        }
+                    }
+                }
+            }
+        }
+    }
+    println!("casts at overflowing times: {casts}, Err(Unsupported) {refused}, the rest finite");
+    // The policies' start-contact answers are the ones refused; the pairs are in contact.
+    assert!(refused > casts / 4, "{refused} of {casts} refused");
+}
+
+/// The promise the hostile fuzz with seed 99 (case 531) found stated too widely: a cast on a
+/// time scale of 2^k answers as on the ordinary scale, with its time scaled, unless the
+/// answer's own rate of distance is beyond f64's range — a spinning half-space's turn times the
+/// lever arm to the far contact, at 2^1000 — where the answer is `Degenerate`
+/// (`QueryError::Degenerate`; the fuzz had expected the ordinary answer). That case's
+/// capsule-ellipse (17 596, 3 859, 9 693) and half-space (moving at 5e5 m/s and spinning at
+/// 4.8 rad/s, the contact 5e6 m from its centre), its time scaled by 2^k for k = −1000 … 1000
+/// (every 50, and every 1 from −1000 to −990, where the rates reach 1e307).
+#[test]
+fn halfspace_cast_answers_alike_on_every_time_scale() {
+    let shape = CapsuleEllipse::new(17596.32492950854, 3858.834104952514, 9692.58743683483);
+    let plane = HalfSpace::new(Vector::new(
+        (-1.5003572930047504f64).cos(),
+        (-1.5003572930047504f64).sin(),
+    ));
+    let hs_pose = Pose::from_parts(
+        Vector::new(-84202.76467746461, -127987.46116208693),
+        parry2d_f64::math::Rotation::from_cos_sin_unchecked(0.04961528762791126, 0.9987684032014628),
+    );
+    let m1 = NonlinearRigidMotion::new(
+        Pose::IDENTITY,
+        Vector::ZERO,
+        Vector::new(1346403.6867640833, -461346.6492651799),
+        55.19429736439399,
+    );
+    let m2 = NonlinearRigidMotion::new(
+        hs_pose,
+        Vector::ZERO,
+        Vector::new(-185546.482384213, 493626.5746941382),
+        -4.788139072837382,
+    );
+    let (mut checked, mut unrepresentable) = (0, 0);
+    for (t0, t1, stop) in [
+        (2.9579598316465, 3.0419384651048547, true),
+        (2.0, 3.2, false),
+        (0.0, 0.5, false),
+    ] {
+        let o = ToiOptions::default().with_stop_at_penetration(stop);
+        let base = time_of_impact_halfspace(&shape, &m1, &plane, &m2, t0, t1, &o).unwrap();
+        for k in (-20..=20).map(|i| 50 * i).chain(-1000..-990) {
+            let s = 2f64.powi(k);
+            let fast = |m: &NonlinearRigidMotion| {
+                NonlinearRigidMotion::new(m.start, m.local_center, m.linvel / s, m.angvel / s)
+            };
+            let r = time_of_impact_halfspace(&shape, &fast(&m1), &plane, &fast(&m2), t0 * s, t1 * s, &o);
+            checked += 1;
+            match r {
+                Err(e) => {
+                    assert!(
+                        e == smooth_ccd2d::QueryError::Degenerate && !(base.distance_rate / s).is_finite(),
+                        "2^{k}: {e:?}, unscaled {base:?}"
+                    );
+                    unrepresentable += 1;
+                }
+                Ok(r) => {
+                    assert_eq!(r.status, base.status, "2^{k}");
+                    assert!(
+                        (r.time / s - base.time).abs() <= 1e-12 * (t1 - t0),
+                        "2^{k}: {} vs {}",
+                        r.time / s,
+                        base.time
+                    );
+                }
+            }
+        }
+    }
+    println!("half-space casts on 51 time scales: {checked}, {unrepresentable} Degenerate (a rate of distance beyond f64), the rest as on the ordinary scale");
+}
+
 // ---------------------------------------------------------------------------------------------
 // The checks of a user's curve
 // ---------------------------------------------------------------------------------------------

@@ -167,7 +167,9 @@ pub fn shape_time_of_impact(
 }
 
 impl SmoothDispatcher {
-    /// The nonlinear cast (module docs).
+    /// The nonlinear cast (module docs), behind the last guard of the dispatcher's casts: a hit
+    /// holding a non-finite number is `Unsupported`, never handed on (a pose the motions reach
+    /// only by overflowing — a spin of 1e160 rad/s over a window of 1e300 s — has no witnesses).
     pub(crate) fn nonlinear_cast(&self, c: &NonlinearCast) -> Result<Option<ShapeCastHit>, Unsupported> {
         if self.cast_policy.is_rapier() {
             // rapier's rules place points in the world frame (a body's core): the pair at the
@@ -175,10 +177,10 @@ impl SmoothDispatcher {
             // about 1 (`query::time_scale`), so that neither the place nor the time scale of
             // the world changes an answer.
             if let Some(answer) = self.rapier_cast_rebased(c) {
-                return answer;
+                return input_guard::finite(answer);
             }
         }
-        self.nonlinear_cast_here(c)
+        input_guard::finite(self.nonlinear_cast_here(c))
     }
 
     /// [`Self::nonlinear_cast`] with the pair moved to the origin and its time rescaled, when

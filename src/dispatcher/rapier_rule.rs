@@ -365,7 +365,7 @@ pub(crate) fn start_contact_answer(
             (a, b) => a.or(b),
         },
     };
-    toi_to_parry(Ok(earliest.map(|t| hit_at(c, t.max(nudge), d0))))
+    toi_to_parry(earliest.map(|t| hit_at(c, t.max(nudge), d0)).transpose())
 }
 
 /// The level the core's signed distance may come down to in a step (rule 3 of the module
@@ -394,9 +394,14 @@ pub(crate) const CORE_DEPTH_LIMIT: Real = 0.5;
 /// The hit of a start contact at time `t`, with the pair's exact contact there for its
 /// witnesses and distance (rapier reads only the time; the witnesses are the pair's own, in
 /// each shape's frame), or the start's distance `d0` and no witnesses when the contact query
-/// does not read the pair.
-pub(crate) fn hit_at(c: &NonlinearCast, t: Real, d0: Real) -> TimeOfImpact {
+/// does not read the pair. [`QueryError::Degenerate`] when the pair's pose at `t` is not finite.
+pub(crate) fn hit_at(c: &NonlinearCast, t: Real, d0: Real) -> Result<TimeOfImpact, QueryError> {
     let pos12 = super::cast::pos12_at(c.m1, c.m2, t);
+    if !pos12.is_finite() {
+        // The motions reach time `t` only by overflowing (a spin of 1e160 rad/s over a window
+        // of 1e300 s): no pose, no witnesses.
+        return Err(QueryError::Degenerate);
+    }
     let k = exact_contact(&pos12, c.g1, c.g2, None);
     let (distance, point1, point2, normal1) = match &k {
         Some(k) => (
@@ -407,7 +412,7 @@ pub(crate) fn hit_at(c: &NonlinearCast, t: Real, d0: Real) -> TimeOfImpact {
         ),
         None => (d0, Vector::ZERO, Vector::ZERO, Vector::X),
     };
-    TimeOfImpact {
+    Ok(TimeOfImpact {
         status: ToiStatus::PenetratingAtStart,
         time: t,
         distance,
@@ -417,5 +422,5 @@ pub(crate) fn hit_at(c: &NonlinearCast, t: Real, d0: Real) -> TimeOfImpact {
         normal1,
         normal2: pos12.rotation.inverse() * -normal1,
         cost: Default::default(),
-    }
+    })
 }

@@ -1622,3 +1622,51 @@ fn thin_capsule_arc_against_thin_ellipse_hit_is_on_target() {
         r.time
     );
 }
+
+/// Found by the fuzz with another seed (`FUZZ_SEED=31337`, case 157490): a thin capsule-ellipse
+/// (r1 = 1.3e-6, r2 = 0.17, r3 = 0.062) turning at 3.8 rad/s about an offset centre against a
+/// 1:8000 ellipse (2.8e-5 × 0.227). Near the ellipse's tip, whose radius of curvature drops from
+/// 1.8e3 on its flat sides to 3.5e-9, the corrector accepted points loosely with |S| = 0.42 (the
+/// witnesses 0.42 apart sideways), where F — a lower bound on the distance at any φ — sat 4.3e-4
+/// (1.9e-3·s) below the distance, and the tracker took F reaching the target for a contact: a
+/// `Hit` at 0.944914, 6.3e-4 s before the first touch. A contact is now claimed only from a point
+/// corrected to the side tolerance, else the global distance at that time decides
+/// (`Tracker::certified_contact`): the hit is where the exact reference puts it, with the
+/// reference distance there on the target.
+#[test]
+fn thin_capsule_ellipse_tip_contact_is_certified_before_a_hit() {
+    let case = generate(31337, 157490);
+    let (ShapeSpec::CapsuleEllipse(r1, r2, r3), ShapeSpec::Ellipse(a, b)) = (&case.s1, &case.s2) else {
+        panic!("the generator changed: {}", describe(&case));
+    };
+    let c = CapsuleEllipse::new(*r1, *r2, *r3);
+    let e = Ellipse::new(*a, *b);
+    let o = ToiOptions::default()
+        .with_target_distance(case.target)
+        .with_stop_at_penetration(case.stop);
+    let r = time_of_impact(&c, &case.m1, &e, &case.m2, case.t0, case.t1, &o).unwrap();
+    let size = c.bounding_radius().max(e.bounding_radius());
+    let truth = common::reference_toi(&c, &case.m1, &e, &case.m2, case.t0, case.t1, case.target);
+    let ref_time = truth.hit_time().expect("the exact reference finds a hit");
+    let reference = common::reference_distance_at(&c, &case.m1, &e, &case.m2, r.time).distance;
+    println!(
+        "thin capsule-ellipse tip vs 1:8000 ellipse: {:?} at {} (reference {ref_time}, window {}), reported distance {:.2e}, reference distance there {:.2e} = {:.1e}·s",
+        r.status,
+        r.time,
+        case.t1 - case.t0,
+        r.distance,
+        reference,
+        reference / size
+    );
+    assert_eq!(r.status, ToiStatus::Hit);
+    assert!(
+        reference - case.target <= 1e-10 * size && reference - case.target >= -1e-12 * size,
+        "reference distance at the hit {reference} (reported {}, size {size})",
+        r.distance
+    );
+    assert!(
+        (r.time - ref_time).abs() <= 1e-10 * (case.t1 - case.t0),
+        "hit at {} vs the reference {ref_time}",
+        r.time
+    );
+}
