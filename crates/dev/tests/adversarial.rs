@@ -1570,6 +1570,16 @@ fn explore_adversarial_numbers_with_random_seeds() {
     println!("explored {cases} random adversarial cases");
 }
 
+/// Fuzz case `index` of batch `seed`, a capsule-ellipse against an ellipse, and its two shapes.
+fn capsule_ellipse_case(seed: u64, index: u64) -> (Case, CapsuleEllipse, Ellipse) {
+    let case = generate(seed, index);
+    let (ShapeSpec::CapsuleEllipse(r1, r2, r3), ShapeSpec::Ellipse(a, b)) = (&case.s1, &case.s2) else {
+        panic!("the generator changed: {}", describe(&case));
+    };
+    let (c, e) = (CapsuleEllipse::new(*r1, *r2, *r3), Ellipse::new(*a, *b));
+    (case, c, e)
+}
+
 /// Found by the fuzz with another seed (`FUZZ_SEED=11`, case 7577): a thin capsule-ellipse
 /// (r1 = 5e-6·r2, arcs of radius 2.35 around (0, ±437 421)) flying at a thin ellipse
 /// (11.9 × 388 332, 1:3e-5) after 976 relative turns. The tracker kept φ unwrapped (|φ| ≈ 6e3),
@@ -1582,12 +1592,8 @@ fn explore_adversarial_numbers_with_random_seeds() {
 /// minus r1, and the reference distance — must be within [−1e-12·s, 1e-10·s].
 #[test]
 fn thin_capsule_arc_against_thin_ellipse_hit_is_on_target() {
-    let case = generate(11, 7577);
-    let (ShapeSpec::CapsuleEllipse(r1, r2, r3), ShapeSpec::Ellipse(a, b)) = (&case.s1, &case.s2) else {
-        panic!("the generator changed: {}", describe(&case));
-    };
-    let c = CapsuleEllipse::new(*r1, *r2, *r3);
-    let e = Ellipse::new(*a, *b);
+    let (case, c, e) = capsule_ellipse_case(11, 7577);
+    let (r1, r2, _) = c.params();
     let o = ToiOptions::default().with_stop_at_penetration(case.stop);
     let r = time_of_impact(&c, &case.m1, &e, &case.m2, case.t0, case.t1, &o).unwrap();
     let size = c.bounding_radius().max(e.bounding_radius());
@@ -1598,7 +1604,7 @@ fn thin_capsule_arc_against_thin_ellipse_hit_is_on_target() {
         .m1
         .position_at_time(r.time)
         .inv_mul(&case.m2.position_at_time(r.time));
-    let exact = ellipse_sd(&e, pos12.inverse_transform_point(Vector::new(0.0, *r2))) - r1;
+    let exact = ellipse_sd(&e, pos12.inverse_transform_point(Vector::new(0.0, r2))) - r1;
     let reference = common::reference_distance_at(&c, &case.m1, &e, &case.m2, r.time).distance;
     println!(
         "thin capsule arc vs thin ellipse: Hit at {} (reference {ref_time}, window {}), reported distance {:.2e}, exact {:.2e} = {:.1e}·s, reference {:.2e}",
@@ -1635,12 +1641,7 @@ fn thin_capsule_arc_against_thin_ellipse_hit_is_on_target() {
 /// reference distance there on the target.
 #[test]
 fn thin_capsule_ellipse_tip_contact_is_certified_before_a_hit() {
-    let case = generate(31337, 157490);
-    let (ShapeSpec::CapsuleEllipse(r1, r2, r3), ShapeSpec::Ellipse(a, b)) = (&case.s1, &case.s2) else {
-        panic!("the generator changed: {}", describe(&case));
-    };
-    let c = CapsuleEllipse::new(*r1, *r2, *r3);
-    let e = Ellipse::new(*a, *b);
+    let (case, c, e) = capsule_ellipse_case(31337, 157490);
     let o = ToiOptions::default()
         .with_target_distance(case.target)
         .with_stop_at_penetration(case.stop);
