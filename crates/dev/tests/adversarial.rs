@@ -1570,6 +1570,14 @@ fn explore_adversarial_numbers_with_random_seeds() {
     println!("explored {cases} random adversarial cases");
 }
 
+/// A hit time within 1e-10 of `case`'s window of the exact reference's.
+fn assert_at_reference_time(time: f64, ref_time: f64, case: &Case) {
+    assert!(
+        (time - ref_time).abs() <= 1e-10 * (case.t1 - case.t0),
+        "hit at {time} vs the reference {ref_time}"
+    );
+}
+
 /// Fuzz case `index` of batch `seed`, a capsule-ellipse against an ellipse, and its two shapes.
 fn capsule_ellipse_case(seed: u64, index: u64) -> (Case, CapsuleEllipse, Ellipse) {
     let case = generate(seed, index);
@@ -1622,11 +1630,7 @@ fn thin_capsule_arc_against_thin_ellipse_hit_is_on_target() {
             r.distance
         );
     }
-    assert!(
-        (r.time - ref_time).abs() <= 1e-10 * (case.t1 - case.t0),
-        "hit at {} vs the reference {ref_time}",
-        r.time
-    );
+    assert_at_reference_time(r.time, ref_time, &case);
 }
 
 /// Found by the fuzz with another seed (`FUZZ_SEED=31337`, case 157490): a thin capsule-ellipse
@@ -1665,9 +1669,5 @@ fn thin_capsule_ellipse_tip_contact_is_certified_before_a_hit() {
         "reference distance at the hit {reference} (reported {}, size {size})",
         r.distance
     );
-    assert!(
-        (r.time - ref_time).abs() <= 1e-10 * (case.t1 - case.t0),
-        "hit at {} vs the reference {ref_time}",
-        r.time
-    );
+    assert_at_reference_time(r.time, ref_time, &case);
 }
