@@ -534,6 +534,43 @@ fn approach_at_1e_minus_200_meters_per_second_is_a_hit() {
     }
 }
 
+/// Found by the fuzz with another seed (`FUZZ_SEED=777`, case 6968): a window from −1e300 s to
+/// −1 s, two bodies 1e-4 in size meeting near its end. The tracker halved its way from the start
+/// to t ≈ −1.1e287 and then recovered with the global distance at t + h, which rounded to 0 (the
+/// window's end, −1, is lost against 1e287): a hit at 0, after the window. Every tracker's next
+/// time is now kept within the window; the hit is at its end, where the pair touches.
+#[test]
+fn a_window_ending_far_from_its_start_keeps_every_answer_inside_it() {
+    let p = RoundedPolygon::try_regular(10, 6.583887209729579e-5, 2.5898850691172458e-5).expect("valid");
+    let b = Ellipse::new(0.00013066506841059132, 0.00013066506841059132);
+    let m1 = NonlinearRigidMotion::new(
+        Pose::IDENTITY,
+        Vector::new(-0.0, -9.960467120501367e-6),
+        Vector::new(-7.045141471315296e-5, 7.145894484436469e-5),
+        5e-324,
+    );
+    let start2 = Pose::from_parts(
+        Vector::new(1.3427850226082439e-5, 5.86613868106411e-5),
+        parry2d_f64::math::Rotation::from_cos_sin_unchecked(0.9505975648210587, 0.31042594890935427),
+    );
+    let m2 = NonlinearRigidMotion::new(
+        start2,
+        Vector::new(-5.6161949771065445e-6, 1e20),
+        Vector::new(7.156175118024756e-5, 2.5148291494086983e-5),
+        0.0,
+    );
+    let (t0, t1) = (-1e300, -1.0);
+    let o = ToiOptions::default().with_stop_at_penetration(true);
+    let r = within("time_of_impact", move || time_of_impact(&p, &m1, &b, &m2, t0, t1, &o)).expect("answered");
+    assert!(
+        (t0..=t1).contains(&r.time),
+        "{:?} at {} outside [{t0}, {t1}]",
+        r.status,
+        r.time
+    );
+    assert_eq!(r.status, ToiStatus::Hit);
+}
+
 // ---------------------------------------------------------------------------------------------
 // 7. constructors that allocate from a count
 // ---------------------------------------------------------------------------------------------
