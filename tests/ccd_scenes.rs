@@ -34,7 +34,7 @@ fn may_freeze(c: &Case) -> bool {
 }
 
 /// The most cases of the [`may_freeze`] class that may freeze.
-const MAX_FROZEN: usize = 2;
+const MAX_FROZEN: usize = 1;
 
 /// What went wrong in a case under `SmoothDispatcher` and is never allowed: a body through a
 /// wall, a NaN, a panic, a frozen body outside [`may_freeze`].

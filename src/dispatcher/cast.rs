@@ -7,7 +7,7 @@
 //! closed form first (`disc_cast`: its centre's straight path against the grown target).
 
 use super::composite::composite_cast_nonlinear;
-use super::disc_cast::{disc_cast, polygon_point_distance};
+use super::disc_cast::{disc_cast, polygon_point_distance, translating_cast};
 use super::input_guard;
 use super::parry_fallback::parry_nonlinear_without_stop;
 use super::parry_fallback::{parry_cast_nonlinear, size_of_radii};
@@ -228,6 +228,9 @@ impl SmoothDispatcher {
         let (opts, rule) = self.cast_setup(c);
         if rule.rapier {
             if let Some(answer) = disc_cast(c, &opts, rule.start_contact) {
+                return answer;
+            }
+            if let Some(answer) = translating_cast(c, &opts) {
                 return answer;
             }
         }

@@ -525,5 +525,9 @@ fn level_entry(p: &DiscPair, p0: Vector, seen: Seen, reach: Real, span: Real, to
     first_entry(&p.core, p0, p.w, span, reach + p.core.radius)
 }
 
+mod translating;
+
+pub(crate) use translating::translating_cast;
+
 #[cfg(test)]
 mod tests;
