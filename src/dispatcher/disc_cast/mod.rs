@@ -72,7 +72,7 @@
 use super::cast::{is_window, toi_to_parry, NonlinearCast};
 use super::rapier_rule::{core_level, in_contact};
 use super::support_shape::{support_shape, SupportScratch};
-use crate::numerics::math::{sin_cos, Real, Vector};
+use crate::numerics::math::{cross, sin_cos, Real, Vector};
 use crate::numerics::motion::motion_is_finite;
 use crate::query::contact::SupportShape;
 use crate::query::path::OnPath;
@@ -194,6 +194,11 @@ pub(crate) fn polygon_point_distance(vertices: &[Vector], normals: &[Vector], p:
     .0
 }
 
+/// Below this fraction of the distance from a vertex, a vertex circle's entry in
+/// [`first_entry`] takes the path's distance to the vertex from a cross product rather than
+/// from a difference of squares (see there).
+const TANGENT_FORM: Real = 1e-3;
+
 /// The first time in `[0, span]` after the start at which the point p₀ + w·s enters
 /// {sd_K ≤ `grow`} (module docs), from a start outside it; `None` when it does not.
 fn first_entry(core: &Core, p0: Vector, w: Vector, span: Real, grow: Real) -> Option<Real> {
@@ -230,7 +235,18 @@ fn first_entry(core: &Core, p0: Vector, w: Vector, span: Real, grow: Real) -> Op
             continue;
         }
         let c = (from.length() - grow) * (from.length() + grow);
-        let disc = b * b - a * c;
+        // b² − ac = a·(grow² − d⊥²), d⊥ the distance from the vertex to the path's line. Its
+        // difference of squares carries ε·b² of rounding: ε·|from|²/(2·grow) on d⊥, enough to
+        // make a path that passes a sharp corner (grow 0, a Minkowski difference's vertex)
+        // 1e-8·|from| away touch it. A circle smaller than `TANGENT_FORM` of the distance takes
+        // d⊥ from the cross product instead (ε·|from| of rounding); larger ones keep the
+        // difference of squares, within 5e-14·|from| there.
+        let disc = if grow >= TANGENT_FORM * from.length() {
+            b * b - a * c
+        } else {
+            let d_perp = cross(from, w).abs() / a.sqrt();
+            a * ((grow - d_perp) * (grow + d_perp))
+        };
         if disc < 0.0 {
             continue;
         }
