@@ -571,6 +571,58 @@ fn a_window_ending_far_from_its_start_keeps_every_answer_inside_it() {
     assert_eq!(r.status, ToiStatus::Hit);
 }
 
+/// Found by the fuzz with another seed (`FUZZ_SEED=2004`, case 122492), in rapier's cast of a
+/// polygon that does not turn (in closed form, as a disc's): a window from −1.8e308 s to
+/// −1.38 s, where the start plus the entry's offset rounds past the window's end. The closed
+/// forms' times are kept within the window.
+#[test]
+fn a_closed_form_cast_over_a_window_ending_far_from_its_start_stays_inside_it() {
+    let p = RoundedPolygon::try_regular(10, 2.509739471376431e-6, 3.0752608652163396e-7).expect("valid");
+    let q = RoundedPolygon::try_new(
+        &[
+            Vector::new(-6.07458065535825e-6, -2.528236234554779e-6),
+            Vector::new(6.562311006503291e-6, -1.668740082707563e-6),
+            Vector::new(5.7054280188391075e-6, 2.989501685379284e-6),
+            Vector::new(5.638999177641803e-6, 3.062381809026463e-6),
+            Vector::new(5.0240907127375235e-6, 3.63534475810723e-6),
+            Vector::new(-6.9112637153172104e-6, 1.814885990066977e-7),
+        ],
+        1.9223336181371837e-6,
+    )
+    .expect("valid");
+    let m1 = NonlinearRigidMotion::new(
+        Pose::IDENTITY,
+        Vector::new(-5.581405653857503e-7, 3.133657443641483e-7),
+        Vector::new(-5.3416986518452875e-6, -9.591119592255376e-6),
+        0.0,
+    );
+    let start2 = Pose::from_parts(
+        Vector::new(6.3298184099516535e-6, 9.614719329102188e-6),
+        parry2d_f64::math::Rotation::from_cos_sin_unchecked(-0.9952068144095766, 0.09779262013435641),
+    );
+    let m2 = NonlinearRigidMotion::new(
+        start2,
+        Vector::ZERO,
+        Vector::new(-4.097794192889215e-6, 4.522391117438657e-6),
+        0.0,
+    );
+    let (t0, t1) = (-f64::MAX, -1.379789359758342);
+    for (g1, g2, a, b) in [(&p, &q, &m1, &m2), (&q, &p, &m2, &m1)] {
+        let (g1, g2, a, b) = (g1.clone(), g2.clone(), *a, *b);
+        let hit = within("cast_shapes_nonlinear", move || {
+            SmoothDispatcher::default().cast_shapes_nonlinear(&a, &g1, &b, &g2, t0, t1, true)
+        })
+        .expect("answered");
+        if let Some(h) = hit {
+            assert!(
+                (t0..=t1).contains(&h.time_of_impact),
+                "a hit at {} outside [{t0}, {t1}]",
+                h.time_of_impact
+            );
+        }
+    }
+}
+
 // ---------------------------------------------------------------------------------------------
 // 7. constructors that allocate from a count
 // ---------------------------------------------------------------------------------------------

@@ -30,7 +30,7 @@
 //! as it always has. A rotation centre (`local_center`) is not read: a body that does not turn
 //! moves by its translation alone, wherever its centre is.
 
-use super::{first_entry, Core};
+use super::{at_offset, first_entry, Core};
 use crate::dispatcher::cast::{is_window, toi_to_parry, NonlinearCast};
 use crate::dispatcher::input_guard;
 use crate::dispatcher::rapier_rule::in_contact;
@@ -104,7 +104,7 @@ pub(crate) fn translating_cast(
     let span = c.t1 - c.t0;
     let grow = r_p + target.radius + delta;
     let s = first_entry(&m, pair.p0, pair.w, span, grow).or_else(|| first_entry(&m, pair.p0, pair.w, span, grow + tol));
-    Some(toi_to_parry(Ok(s.map(|s| pair.hit(c, c.t0 + s)))))
+    Some(toi_to_parry(Ok(s.map(|s| pair.hit(c, at_offset(c, s))))))
 }
 
 /// Whether the bodies' bounding spheres (`c.spheres`, about points of the bodies that move by
