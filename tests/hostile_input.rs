@@ -623,6 +623,48 @@ fn a_closed_form_cast_over_a_window_ending_far_from_its_start_stays_inside_it() 
     }
 }
 
+/// Found by the fuzz with another seed (`FUZZ_SEED=3004`, case 157457): two parry balls of
+/// radius −0 and 1e-300 (points) passing each other at about 100 m/s. The pair's rates, 1e302
+/// sizes a second, sent rapier's policy to a time scale where they are about 1 — and parry's own
+/// cast, which answers the pair, to a window of 1e302 s, where its conservative advancement
+/// with absolute time tolerances never ended. parry's own pairs now keep the caller's time
+/// scale: the call answers at once (parry itself, on the same input, answers no hit in 10 µs).
+#[test]
+fn parry_balls_of_no_size_passing_each_other_are_answered_at_once() {
+    let m1 = NonlinearRigidMotion::new(
+        Pose::IDENTITY,
+        Vector::ZERO,
+        Vector::new(38.78496442129538, 101.40148917307064),
+        -6.083702193247845,
+    );
+    let start2 = Pose::from_parts(
+        Vector::new(0.0, 47.28740043084232),
+        parry2d_f64::math::Rotation::from_cos_sin_unchecked(-0.8807951589750529, 0.4734975057232205),
+    );
+    let m2 = NonlinearRigidMotion::new(
+        start2,
+        Vector::ZERO,
+        Vector::new(-11.563600781145531, -78.24517107232525),
+        0.0,
+    );
+    for (r1, r2) in [(-0.0, 1e-300), (1e-300, -0.0)] {
+        let r = within("cast_shapes_nonlinear", move || {
+            SmoothDispatcher::default().cast_shapes_nonlinear(
+                &m1,
+                &Ball::new(r1),
+                &m2,
+                &Ball::new(r2),
+                0.0,
+                1.1502567991219912,
+                false,
+            )
+        });
+        if let Ok(Some(h)) = r {
+            assert!(h.time_of_impact.is_finite() && (0.0..=1.1502567991219912).contains(&h.time_of_impact));
+        }
+    }
+}
+
 // ---------------------------------------------------------------------------------------------
 // 7. constructors that allocate from a count
 // ---------------------------------------------------------------------------------------------

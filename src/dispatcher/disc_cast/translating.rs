@@ -107,6 +107,10 @@ pub(crate) fn translating_cast(
     Some(toi_to_parry(Ok(s.map(|s| pair.hit(c, at_offset(c, s))))))
 }
 
+/// The rounding allowed to [`spheres_pass`]'s closest approach, relative to the pair's size,
+/// its travel and its start's distance (as `rapier_rule::out_of_reach` allows its bound).
+const SPHERE_ROUNDING: Real = 1e-9;
+
 /// Whether the bodies' bounding spheres (`c.spheres`, about points of the bodies that move by
 /// their translations alone) stay more than `level` apart over the whole window: then no
 /// impact, whatever the shapes inside them. The closest approach of the two centres, on the
@@ -125,7 +129,7 @@ fn spheres_pass(c: &NonlinearCast, level: Real) -> bool {
     };
     let closest = (d0 + w * s).length();
     let reach = c.spheres[0].radius + c.spheres[1].radius + level;
-    let margin = 1e-9 * (c.size() + w.length() * span + d0.length());
+    let margin = SPHERE_ROUNDING * (c.size() + w.length() * span + d0.length());
     closest.is_finite() && closest > reach + margin
 }
 
