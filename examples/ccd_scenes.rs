@@ -12,7 +12,8 @@
 //! `--recycle-distance=D` to set rapier's `normalized_contact_recycle_distance`, 0.05 by default,
 //! and `--ccd-hooks` to give the launched CCD bodies' colliders
 //! `ActiveHooks::MODIFY_SOLVER_CONTACTS` with no-op hooks, so that rapier never recycles their
-//! pairs).
+//! pairs, and `--rotation-cap-kept` to give `allow_fast_rotation` only to the cases whose spin is
+//! above rapier's rotation cap, π/4 a step, not to every case above one of its caps).
 
 #[path = "common/mod.rs"]
 mod common;
@@ -31,6 +32,8 @@ fn main() {
         .map(|d| d.parse::<f64>().expect("--recycle-distance=D, D a number"));
     // `--ccd-hooks`: the CCD bodies' colliders with active (no-op) hooks, never recycled.
     let ccd_hooks = args.iter().any(|a| a == "--ccd-hooks");
+    // `--rotation-cap-kept`: `allow_fast_rotation` only on the cases whose spin is above π/4 a step.
+    let rotation_cap_kept = args.iter().any(|a| a == "--rotation-cap-kept");
     let filter = args.iter().find(|a| !a.starts_with("--"));
     let cases: Vec<_> = all_cases()
         .into_iter()
@@ -39,15 +42,21 @@ fn main() {
             recycling,
             recycle_distance,
             ccd_hooks,
+            rotation_cap_kept,
             ..c
         })
         .collect();
     let t = std::time::Instant::now();
     let outcomes = run_all(&cases);
     println!(
-        "CCD scene suite: {} cases, dt = 1/60 s; rapier's caps lifted in {} of them (speed > 400 m/s or spin > 47 rad/s); contact recycling {}{}",
+        "CCD scene suite: {} cases, dt = 1/60 s; rapier's caps lifted in {} of them (speed > 400 m/s or spin > 47 rad/s){}; contact recycling {}{}",
         cases.len(),
         cases.iter().filter(|c| c.lifted()).count(),
+        if rotation_cap_kept {
+            ", its rotation cap only in the cases spinning above it"
+        } else {
+            ""
+        },
         match (recycling, recycle_distance) {
             (false, _) => "off".to_string(),
             (true, None) => "on (rapier's default)".to_string(),

@@ -534,6 +534,137 @@ fn approach_at_1e_minus_200_meters_per_second_is_a_hit() {
     }
 }
 
+/// Found by the fuzz with another seed (`FUZZ_SEED=777`, case 6968): a window from −1e300 s to
+/// −1 s, two bodies 1e-4 in size meeting near its end. The tracker halved its way from the start
+/// to t ≈ −1.1e287 and then recovered with the global distance at t + h, which rounded to 0 (the
+/// window's end, −1, is lost against 1e287): a hit at 0, after the window. Every tracker's next
+/// time is now kept within the window; the hit is at its end, where the pair touches.
+#[test]
+fn a_window_ending_far_from_its_start_keeps_every_answer_inside_it() {
+    let p = RoundedPolygon::try_regular(10, 6.583887209729579e-5, 2.5898850691172458e-5).expect("valid");
+    let b = Ellipse::new(0.00013066506841059132, 0.00013066506841059132);
+    let m1 = NonlinearRigidMotion::new(
+        Pose::IDENTITY,
+        Vector::new(-0.0, -9.960467120501367e-6),
+        Vector::new(-7.045141471315296e-5, 7.145894484436469e-5),
+        5e-324,
+    );
+    let start2 = Pose::from_parts(
+        Vector::new(1.3427850226082439e-5, 5.86613868106411e-5),
+        parry2d_f64::math::Rotation::from_cos_sin_unchecked(0.9505975648210587, 0.31042594890935427),
+    );
+    let m2 = NonlinearRigidMotion::new(
+        start2,
+        Vector::new(-5.6161949771065445e-6, 1e20),
+        Vector::new(7.156175118024756e-5, 2.5148291494086983e-5),
+        0.0,
+    );
+    let (t0, t1) = (-1e300, -1.0);
+    let o = ToiOptions::default().with_stop_at_penetration(true);
+    let r = within("time_of_impact", move || time_of_impact(&p, &m1, &b, &m2, t0, t1, &o)).expect("answered");
+    assert!(
+        (t0..=t1).contains(&r.time),
+        "{:?} at {} outside [{t0}, {t1}]",
+        r.status,
+        r.time
+    );
+    assert_eq!(r.status, ToiStatus::Hit);
+}
+
+/// Found by the fuzz with another seed (`FUZZ_SEED=2004`, case 122492), in rapier's cast of a
+/// polygon that does not turn (in closed form, as a disc's): a window from −1.8e308 s to
+/// −1.38 s, where the start plus the entry's offset rounds past the window's end. The closed
+/// forms' times are kept within the window.
+#[test]
+fn a_closed_form_cast_over_a_window_ending_far_from_its_start_stays_inside_it() {
+    let p = RoundedPolygon::try_regular(10, 2.509739471376431e-6, 3.0752608652163396e-7).expect("valid");
+    let q = RoundedPolygon::try_new(
+        &[
+            Vector::new(-6.07458065535825e-6, -2.528236234554779e-6),
+            Vector::new(6.562311006503291e-6, -1.668740082707563e-6),
+            Vector::new(5.7054280188391075e-6, 2.989501685379284e-6),
+            Vector::new(5.638999177641803e-6, 3.062381809026463e-6),
+            Vector::new(5.0240907127375235e-6, 3.63534475810723e-6),
+            Vector::new(-6.9112637153172104e-6, 1.814885990066977e-7),
+        ],
+        1.9223336181371837e-6,
+    )
+    .expect("valid");
+    let m1 = NonlinearRigidMotion::new(
+        Pose::IDENTITY,
+        Vector::new(-5.581405653857503e-7, 3.133657443641483e-7),
+        Vector::new(-5.3416986518452875e-6, -9.591119592255376e-6),
+        0.0,
+    );
+    let start2 = Pose::from_parts(
+        Vector::new(6.3298184099516535e-6, 9.614719329102188e-6),
+        parry2d_f64::math::Rotation::from_cos_sin_unchecked(-0.9952068144095766, 0.09779262013435641),
+    );
+    let m2 = NonlinearRigidMotion::new(
+        start2,
+        Vector::ZERO,
+        Vector::new(-4.097794192889215e-6, 4.522391117438657e-6),
+        0.0,
+    );
+    let (t0, t1) = (-f64::MAX, -1.379789359758342);
+    for (g1, g2, a, b) in [(&p, &q, &m1, &m2), (&q, &p, &m2, &m1)] {
+        let (g1, g2, a, b) = (g1.clone(), g2.clone(), *a, *b);
+        let hit = within("cast_shapes_nonlinear", move || {
+            SmoothDispatcher::default().cast_shapes_nonlinear(&a, &g1, &b, &g2, t0, t1, true)
+        })
+        .expect("answered");
+        if let Some(h) = hit {
+            assert!(
+                (t0..=t1).contains(&h.time_of_impact),
+                "a hit at {} outside [{t0}, {t1}]",
+                h.time_of_impact
+            );
+        }
+    }
+}
+
+/// Found by the fuzz with another seed (`FUZZ_SEED=3004`, case 157457): two parry balls of
+/// radius −0 and 1e-300 (points) passing each other at about 100 m/s. The pair's rates, 1e302
+/// sizes a second, sent rapier's policy to a time scale where they are about 1 — and parry's own
+/// cast, which answers the pair, to a window of 1e302 s, where its conservative advancement
+/// with absolute time tolerances never ended. parry's own pairs now keep the caller's time
+/// scale: the call answers at once (parry itself, on the same input, answers no hit in 10 µs).
+#[test]
+fn parry_balls_of_no_size_passing_each_other_are_answered_at_once() {
+    let m1 = NonlinearRigidMotion::new(
+        Pose::IDENTITY,
+        Vector::ZERO,
+        Vector::new(38.78496442129538, 101.40148917307064),
+        -6.083702193247845,
+    );
+    let start2 = Pose::from_parts(
+        Vector::new(0.0, 47.28740043084232),
+        parry2d_f64::math::Rotation::from_cos_sin_unchecked(-0.8807951589750529, 0.4734975057232205),
+    );
+    let m2 = NonlinearRigidMotion::new(
+        start2,
+        Vector::ZERO,
+        Vector::new(-11.563600781145531, -78.24517107232525),
+        0.0,
+    );
+    for (r1, r2) in [(-0.0, 1e-300), (1e-300, -0.0)] {
+        let r = within("cast_shapes_nonlinear", move || {
+            SmoothDispatcher::default().cast_shapes_nonlinear(
+                &m1,
+                &Ball::new(r1),
+                &m2,
+                &Ball::new(r2),
+                0.0,
+                1.1502567991219912,
+                false,
+            )
+        });
+        if let Ok(Some(h)) = r {
+            assert!(h.time_of_impact.is_finite() && (0.0..=1.1502567991219912).contains(&h.time_of_impact));
+        }
+    }
+}
+
 // ---------------------------------------------------------------------------------------------
 // 7. constructors that allocate from a count
 // ---------------------------------------------------------------------------------------------

@@ -157,17 +157,21 @@ pub enum Set {
     Beyond,
     /// In contact at the start (touching or up to a tenth of the inradius deep), |ω|·DT ≤ π/4.
     Contact,
+    /// Apart at the start, no spin at all (a body with its rotation locked, a bullet fired
+    /// without spin): rapier's cast of a body that does not turn.
+    Still,
 }
 
 impl Set {
     /// Every set.
-    pub const ALL: [Set; 3] = [Set::Apart, Set::Beyond, Set::Contact];
+    pub const ALL: [Set; 4] = [Set::Apart, Set::Beyond, Set::Contact, Set::Still];
 
     fn name(self) -> &'static str {
         match self {
             Set::Apart => "apart, ≤ π/4",
             Set::Beyond => "apart, π/4–4π",
             Set::Contact => "contact, ≤ π/4",
+            Set::Still => "apart, no spin",
         }
     }
 }
@@ -463,6 +467,7 @@ pub fn make_case(body: Body, target: Target, set: Set, seed: u64) -> RCase {
         let turn = match set {
             Set::Apart | Set::Contact => rng.uniform(-FRAC_PI_4, FRAC_PI_4),
             Set::Beyond => rng.sign() * rng.uniform(FRAC_PI_4, 4.0 * PI),
+            Set::Still => 0.0,
         };
         let angle = rng.angle();
         let u = rng.direction();
@@ -488,7 +493,7 @@ pub fn make_case(body: Body, target: Target, set: Set, seed: u64) -> RCase {
             2.0 * far,
         );
         let (centre, velocity) = match set {
-            Set::Apart | Set::Beyond => {
+            Set::Apart | Set::Beyond | Set::Still => {
                 // Touching (without spin) at fraction f of the step, or stopping short, or
                 // passing by.
                 let f = if contact.is_some() && rng.chance(0.3) {
@@ -513,7 +518,7 @@ pub fn make_case(body: Body, target: Target, set: Set, seed: u64) -> RCase {
         let start = pose_with_centre(angle, com, centre);
         let d0 = distance(&*ours_curve, &start, &target_curve, &target_pose);
         let ok = match set {
-            Set::Apart | Set::Beyond => d0 >= MIN_START_GAP,
+            Set::Apart | Set::Beyond | Set::Still => d0 >= MIN_START_GAP,
             Set::Contact => d0 <= 1e-9 * reach,
         };
         if !ok {
@@ -717,7 +722,7 @@ pub fn judge_case(c: &RCase, ours: Option<f64>, parry: Option<f64>) -> Judged {
     };
     let radii = proxy_radii(&*c.parry, &*c.target_shape);
     match c.set {
-        Set::Apart | Set::Beyond => {
+        Set::Apart | Set::Beyond | Set::Still => {
             let rf = reference_level(c, &*c.ours_curve, &c.motion, 0.0, 0.0);
             let ours_v = judge_ours(ours, &rf, size);
             let parry_v = judge_parry_band(c, &*parry_curve, &c.motion, radii, parry, true);
@@ -1052,6 +1057,7 @@ pub fn calls() {
             Set::Apart => "apart",
             Set::Beyond => "beyond",
             Set::Contact => "contact",
+            Set::Still => "still",
         };
         for body in Body::ALL {
             if !(pick("RAPIER_CASTS_SET", set_name) && pick("RAPIER_CASTS_BODY", body.name())) {

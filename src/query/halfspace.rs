@@ -297,7 +297,7 @@ fn toi_halfspace(
         if h < h_max && m > 0.0 {
             cost.guard_limited_steps += 1;
         }
-        let tn = if h >= h_max { t1 } else { s.t + h };
+        let tn = if h >= h_max { t1 } else { (s.t + h).min(t1) };
         if tn <= s.t {
             return Ok(finish(&s, ToiStatus::OutOfIterations, cost));
         }

@@ -7,7 +7,8 @@
 //! spin. Where the speed is above rapier's linear cap (400 m/s) or the spin above its rotation
 //! cap (π/4 per step), the case lifts them: `normalized_max_linear_velocity = f64::MAX` and
 //! `allow_fast_rotation` on the moving bodies ([`Case::lifted`]), so that the speed claimed is the
-//! speed simulated.
+//! speed simulated ([`Case::rotation_cap_kept`] keeps the rotation cap of a case whose own spin
+//! is below it).
 #![allow(dead_code)]
 
 use super::world::{World, GRAVITY};
@@ -288,10 +289,16 @@ pub struct Case {
     /// so these bodies' pairs are recomputed every step while every other pair is recycled as
     /// usual (docs/rapier.md, "What is left").
     pub ccd_hooks: bool,
+    /// `allow_fast_rotation` only where the case's spin is above rapier's rotation cap (π/4 a
+    /// step), rather than on every case above either cap ([`Case::lifted`]): a fast body
+    /// launched with a slow spin keeps rapier's rotation cap, whatever spin its collisions
+    /// give it (`--rotation-cap-kept` of the example). By default (false) it is lifted too.
+    pub rotation_cap_kept: bool,
 }
 
 impl Case {
-    /// Whether the case lifts rapier's caps (its speed or spin is above them).
+    /// Whether the case lifts rapier's caps (its speed or spin is above them; with
+    /// [`Case::rotation_cap_kept`], the rotation cap only where its spin is above it).
     pub fn lifted(&self) -> bool {
         self.speed > 400.0 || self.spin.abs() * DT > FRAC_PI_4
     }
@@ -313,6 +320,7 @@ pub fn all_cases() -> Vec<Case> {
                         recycling: true,
                         recycle_distance: None,
                         ccd_hooks: false,
+                        rotation_cap_kept: false,
                     });
                 }
             }
@@ -368,7 +376,11 @@ pub fn build(case: &Case, method: Method) -> Scene {
                     .linvel(v)
                     .angvel(case.spin)
                     .ccd_enabled(bullet)
-                    .allow_fast_rotation(lifted)
+                    .allow_fast_rotation(if case.rotation_cap_kept {
+                        case.spin.abs() * DT > FRAC_PI_4
+                    } else {
+                        lifted
+                    })
                     .can_sleep(false),
                 ColliderBuilder::new(body_shape.clone())
                     .active_hooks(if bullet && case.ccd_hooks {

@@ -584,3 +584,39 @@ fn the_cores_closed_form_time_is_the_level_searchs() {
     println!("{cases} core times, {hits} hits, the search at most {worst:.3} of its tolerance off the level");
     assert!(hits * 5 > cases, "{hits} hits of {cases}");
 }
+
+/// A path that passes a sharp corner (a vertex circle of radius 0, as the Minkowski difference
+/// of two sharp polygons has them) does not enter it, however close it passes: random
+/// directions and distances from 1e-14 to 1e-6 of the path's distance from the vertex (the
+/// difference of squares of the quadratic made those within about 1e-8 touch it), and one
+/// twice as large about it is entered where the path's line meets it.
+#[test]
+fn a_path_passing_a_sharp_corner_does_not_enter_it() {
+    let mut rng = Rng(0x51DE_C0DE);
+    let core = Core {
+        vertices: &CENTRE,
+        normals: &[],
+        radius: 0.0,
+    };
+    let mut cases = 0;
+    for _ in 0..20_000 {
+        let u = rng.direction();
+        let n = Vector::new(-u.y, u.x);
+        let (far, speed) = (rng.uniform(0.1, 10.0), rng.uniform(0.1, 100.0));
+        let gap = far * 10f64.powf(rng.uniform(-14.0, -6.0));
+        let p0 = -u * far + n * gap;
+        let w = u * speed;
+        assert_eq!(
+            first_entry(&core, p0, w, 2.0 * far / speed, 0.0),
+            None,
+            "gap {gap:e} at {far}"
+        );
+        // Within a circle of radius 2·gap about the corner: entered where the line meets it.
+        let r = 2.0 * gap;
+        let s = first_entry(&core, p0, w, 2.0 * far / speed, r).expect("within the circle");
+        let want = (far - (r * r - gap * gap).sqrt()) / speed;
+        assert!((s - want).abs() <= 1e-12 * far / speed, "{s} vs {want}");
+        cases += 1;
+    }
+    println!("a_path_passing_a_sharp_corner_does_not_enter_it: {cases} paths");
+}

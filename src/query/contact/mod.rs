@@ -70,6 +70,7 @@
 
 mod arc;
 pub(crate) mod feet;
+pub(crate) mod minkowski;
 mod polygons;
 mod side;
 mod two_ellipses;

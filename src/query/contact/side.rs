@@ -100,7 +100,7 @@ pub(super) fn turning(normals: &[Vector]) -> bool {
 /// Whether the walk takes a polygon of these vertices and edge normals: 2 to
 /// [`MAX_BREAKPOINTS`] vertices, one normal each, normals [`turning`].
 #[inline]
-pub(super) fn polygon_is_walkable(vertices: &[Vector], normals: &[Vector]) -> bool {
+pub(crate) fn polygon_is_walkable(vertices: &[Vector], normals: &[Vector]) -> bool {
     (2..=MAX_BREAKPOINTS).contains(&vertices.len()) && normals.len() == vertices.len() && turning(normals)
 }
 

@@ -291,7 +291,7 @@ impl<'a> GapTracker<'a> {
             if h.is_nan() || h <= 0.0 || t + h <= t {
                 return Ok(self.result(ToiStatus::OutOfIterations, &p));
             }
-            let t_new = if h >= h_max { self.t1 } else { t + h };
+            let t_new = if h >= h_max { self.t1 } else { (t + h).min(self.t1) };
             let mut q = self.eval_from(&p, t_new)?;
             if aim && q.at.d - delta < floor {
                 // Aimed beyond the contact: back up along the far point's Taylor model of D.

@@ -374,7 +374,7 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
                 // No representable progress: the guard pins us at t.
                 return Ok(self.finish(ToiStatus::OutOfIterations, t, phi, j));
             }
-            let mut t_new = if h >= h_max { self.t1 } else { t + h };
+            let mut t_new = if h >= h_max { self.t1 } else { (t + h).min(self.t1) };
             // The accepted point may leave a residual S (loose tolerance away from contact):
             // its Newton correction joins the Taylor step.
             let phi_pred = phi + plan.resid + h * (plan.dphi + 0.5 * plan.ddphi * h);
@@ -443,7 +443,14 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
                     h_acc = h.min(h_acc) * STEP_SHRINK;
                     if h_acc <= window * RECOVER_BELOW {
                         // Cannot make progress by tracking: recover with the global distance.
-                        let t_try = t + h;
+                        // Within the window: t + h rounds past its end where |t| is far
+                        // above |t1| (fuzz seed 777, case 6968: t = −1.1e287 and a window
+                        // ending at −1 gave t + h = 0).
+                        let t_try = if h >= self.t1 - t {
+                            self.t1
+                        } else {
+                            (t + h).min(self.t1)
+                        };
                         let (p2, j2) = self.global_at(t_try, phi_pred, Tol::Fixed(self.side_tol))?;
                         self.cost.predictor_steps += 1;
                         t_prev = t;
