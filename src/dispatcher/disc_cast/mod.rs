@@ -301,7 +301,13 @@ pub(crate) fn disc_cast(
     start_contact: bool,
 ) -> Option<Result<Option<ShapeCastHit>, Unsupported>> {
     let rho = moving_disc(c)?;
-    let ok_motions = motion_is_finite(c.m1) && motion_is_finite(c.m2) && c.m2.angvel == 0.0;
+    // Start poses parry could not use (a rotation that is not unit, coordinates beyond its
+    // range) are the general path's, which answers such input as it always has.
+    let ok_motions = motion_is_finite(c.m1)
+        && motion_is_finite(c.m2)
+        && c.m2.angvel == 0.0
+        && super::input_guard::pose_ok(&c.m1.start)
+        && super::input_guard::pose_ok(&c.m2.start);
     let ok_options = opts.target_distance >= 0.0
         && opts.target_distance.is_finite()
         && opts.distance_tolerance >= 0.0

@@ -620,3 +620,22 @@ fn a_path_passing_a_sharp_corner_does_not_enter_it() {
     }
     println!("a_path_passing_a_sharp_corner_does_not_enter_it: {cases} paths");
 }
+
+/// A start pose parry could not use — a rotation that is not unit — is left to the general
+/// path, on either side, as the non-turning polygon's closed form leaves it: the closed form
+/// would read the target's frame from it.
+#[test]
+fn a_start_pose_parry_cannot_use_is_left_to_the_general_path() {
+    let disc = Ellipse::new(0.3, 0.3);
+    let target = Cuboid::new(Vector::new(0.5, 0.2));
+    let bent = Pose::from_parts(Vector::new(2.0, 0.0), Rotation::from_cos_sin_unchecked(1e-160, -0.886));
+    let fine = Pose::from_parts(Vector::new(2.0, 0.0), Rotation::IDENTITY);
+    let opts = ToiOptions::default();
+    for (p1, p2) in [(bent, Pose::IDENTITY), (Pose::IDENTITY, bent), (fine, Pose::IDENTITY)] {
+        let m1 = NonlinearRigidMotion::new(p1, Vector::ZERO, Vector::new(-120.0, 0.0), 0.0);
+        let m2 = NonlinearRigidMotion::new(p2, Vector::ZERO, Vector::ZERO, 0.0);
+        let c = NonlinearCast::new(&m1, &disc, &m2, &target, (0.0, 1.0 / 60.0), false);
+        let answered = disc_cast(&c, &opts, true).is_some();
+        assert_eq!(answered, p1 == fine, "{p1:?} / {p2:?}");
+    }
+}
