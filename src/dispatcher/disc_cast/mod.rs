@@ -130,16 +130,29 @@ impl<'a> Core<'a> {
     }
 }
 
+/// Which feature of a core is nearest a point ([`Core::nearest`]): an edge (its index, the
+/// point's foot inside it or the point inside the polygon) or a vertex.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+enum Nearest {
+    Edge(usize),
+    Vertex(usize),
+}
+
 impl Core<'_> {
     /// The signed distance from `p` to the core (not its dilation), the core's point nearest to
     /// `p` and the unit normal from it towards `p` (outward: inside, the normal of the nearest
     /// edge). A point at a point core takes the x axis.
     fn distance(&self, p: Vector) -> Seen {
+        self.nearest(p).0
+    }
+
+    /// [`Core::distance`] and the feature the nearest point lies on.
+    fn nearest(&self, p: Vector) -> (Seen, Nearest) {
         let n = self.vertices.len();
         if n == 1 {
             let d = (p - self.vertices[0]).length();
             let normal = if d > 0.0 { (p - self.vertices[0]) / d } else { Vector::X };
-            return (d, self.vertices[0], normal);
+            return ((d, self.vertices[0], normal), Nearest::Vertex(0));
         }
         if n >= 3 {
             // Inside a proper polygon the nearest boundary is the nearest edge line.
@@ -152,33 +165,33 @@ impl Core<'_> {
             }
             if best <= 0.0 {
                 let normal = self.normals[at];
-                return (best, p - normal * best, normal);
+                return ((best, p - normal * best, normal), Nearest::Edge(at));
             }
         }
         // Outside (or a segment core): the nearest point of the edges.
-        let mut nearest = (Real::INFINITY, self.vertices[0]);
+        let mut nearest = (Real::INFINITY, self.vertices[0], Nearest::Vertex(0));
         let edges = if n == 2 { 1 } else { n };
         // Each edge vᵢ → vᵢ₊₁ (no `%` in the loop: an integer division an edge).
         let next = self.vertices.iter().cycle().skip(1);
-        for (&a, &b) in self.vertices.iter().zip(next).take(edges) {
+        for (i, (&a, &b)) in self.vertices.iter().zip(next).take(edges).enumerate() {
             // The foot of p on the edge, a + e·clamp((p − a)·e / |e|², 0, 1); the division only
             // where the foot falls within the edge (the same point at either end).
             let (e, along) = (b - a, (p - a).dot(b - a));
-            let q = if along <= 0.0 {
-                a
+            let (q, at) = if along <= 0.0 {
+                (a, Nearest::Vertex(i))
             } else if along >= e.length_squared() {
-                a + e
+                (a + e, Nearest::Vertex(if i + 1 == n { 0 } else { i + 1 }))
             } else {
-                a + e * (along / e.length_squared())
+                (a + e * (along / e.length_squared()), Nearest::Edge(i))
             };
             let d2 = (p - q).length_squared();
             if d2 < nearest.0 {
-                nearest = (d2, q);
+                nearest = (d2, q, at);
             }
         }
         let d = nearest.0.sqrt();
         let normal = if d > 0.0 { (p - nearest.1) / d } else { Vector::X };
-        (d, nearest.1, normal)
+        ((d, nearest.1, normal), nearest.2)
     }
 }
 

@@ -30,7 +30,7 @@
 //! as it always has. A rotation centre (`local_center`) is not read: a body that does not turn
 //! moves by its translation alone, wherever its centre is.
 
-use super::{at_offset, first_entry, Core};
+use super::{at_offset, first_entry, Core, Nearest};
 use crate::dispatcher::cast::{is_window, toi_to_parry, NonlinearCast};
 use crate::dispatcher::input_guard;
 use crate::dispatcher::rapier_rule::in_contact;
@@ -233,58 +233,29 @@ impl<'a> Translating<'a> {
         )
     }
 
-    /// The signed distance from `x` to M, the outward normal at M's nearest point q, and the
-    /// points a of T and b of P with q = a − b.
+    /// The signed distance from `x` to M, the outward normal at M's nearest point q
+    /// ([`Core::nearest`]), and the points a of T and b of P with q = a − b: on an edge of T,
+    /// P's vertex of that edge and a = q + b; on an edge of P, T's vertex and b = a − q; at a
+    /// vertex, the two vertices it is the difference of.
     fn nearest(&self, x: Vector) -> (Real, Vector, (Vector, Vector)) {
         let m = &self.m;
-        let n = m.len;
         let pair = |i: usize| {
             let (ti, pi) = m.from[i];
             (self.t_vertices[ti as usize], self.p_vertices[pi as usize])
         };
-        // On edge i at q: the vertex of the polygon the edge is not an edge of stays.
-        let on_edge = |i: usize, q: Vector| {
-            let (a, b) = pair(i);
-            if m.of_t[i] {
-                (q + b, b)
-            } else {
-                (a, a - q)
+        let ((sd, q, normal), at) = self.core().nearest(x);
+        let ab = match at {
+            Nearest::Vertex(k) => pair(k),
+            Nearest::Edge(i) => {
+                let (a, b) = pair(i);
+                if m.of_t[i] {
+                    (q + b, b)
+                } else {
+                    (a, a - q)
+                }
             }
         };
-        // Inside: the nearest boundary is the nearest edge line.
-        let (mut best, mut at) = (Real::NEG_INFINITY, 0);
-        for i in 0..n {
-            let s = m.normals[i].dot(x - m.vertices[i]);
-            if s > best {
-                (best, at) = (s, i);
-            }
-        }
-        if best <= 0.0 {
-            let normal = m.normals[at];
-            return (best, normal, on_edge(at, x - normal * best));
-        }
-        // Outside: the nearest point of the edges, a vertex or an edge's foot.
-        let mut nearest = (Real::INFINITY, m.vertices[0], 0usize, true);
-        for i in 0..n {
-            let next = if i + 1 == n { 0 } else { i + 1 };
-            let (a, e) = (m.vertices[i], m.vertices[next] - m.vertices[i]);
-            let along = (x - a).dot(e);
-            let (q, k, vertex) = if along <= 0.0 {
-                (a, i, true)
-            } else if along >= e.length_squared() {
-                (a + e, next, true)
-            } else {
-                (a + e * (along / e.length_squared()), i, false)
-            };
-            let d2 = (x - q).length_squared();
-            if d2 < nearest.0 {
-                nearest = (d2, q, k, vertex);
-            }
-        }
-        let (d2, q, k, vertex) = nearest;
-        let d = d2.sqrt();
-        let normal = if d > 0.0 { (x - q) / d } else { m.normals[k] };
-        (d, normal, if vertex { pair(k) } else { on_edge(k, q) })
+        (sd, normal, ab)
     }
 
     /// The hit at time `t`: the pair's distance there, each witness and normal in its shape's
