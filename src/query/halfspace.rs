@@ -247,12 +247,15 @@ fn toi_halfspace(
             h *= 2.0;
         }
     }
+    // The latest sample found apart by more than the tolerance (the window's start before any):
+    // a Newton step back from a sample that went too deep never goes before it.
+    let mut t_safe = s.t;
     loop {
         let gap = s.dist - delta;
         if gap <= tol {
             // One Newton step on D from the safe side, kept if it stays within the tolerances.
             if s.dg < 0.0 {
-                let tn = (s.t - gap / s.dg).min(t1);
+                let tn = (s.t - gap / s.dg).max(t_safe).min(t1);
                 let sn = sample(curve, &rel, n, tn);
                 cost.evaluations += 1;
                 let g = sn.dist - delta;
@@ -265,6 +268,7 @@ fn toi_halfspace(
         if s.t >= t1 {
             return Ok(finish(&s, ToiStatus::NoHit, cost));
         }
+        t_safe = s.t;
         if cost.predictor_steps >= opts.max_steps {
             return Ok(finish(&s, ToiStatus::OutOfIterations, cost));
         }
@@ -359,5 +363,42 @@ mod tests {
         assert_eq!(r.status, ToiStatus::Hit);
         let exact = (core::f64::consts::FRAC_PI_4 - 0.9f64.acos()) / w;
         assert!((r.time - exact).abs() < 1e-10, "{} vs {exact}", r.time);
+    }
+    #[test]
+    fn a_step_that_lands_too_deep_never_answers_before_the_window() {
+        // A 1:1e13 ellipse whose rotation centre lies 1e20 from it (its poses lose every digit
+        // below 1e4 to cancellation) against a plane spinning at 33 rad/s (adversarial fuzz seed
+        // 5002, case 171443): a step lands deep in the plane, and the Newton step back from it
+        // went before the window's start.
+        let e = Ellipse::new(2.220446049250313e-16, 0.001623169972206168);
+        let a = 2.190985422073564f64;
+        let hs = HalfSpace::new(Vector::new(a.cos(), a.sin()));
+        let mh = NonlinearRigidMotion::new(
+            Pose::IDENTITY,
+            Vector::new(-0.0003864408913939695, 0.00020455837593540894),
+            Vector::new(0.0019987359199316254, 0.003653119830906449),
+            33.399090152925226,
+        );
+        let mc = NonlinearRigidMotion::new(
+            Pose::from_parts(
+                Vector::new(5e-324, -0.003004930841086855),
+                parry2d_f64::math::Rotation::from_cos_sin_unchecked(-0.23451733655715337, 0.9721119374095448),
+            ),
+            Vector::new(0.00012592908985896542, 1e20),
+            Vector::new(0.004368948647027078, -0.0013309441237117745),
+            0.0,
+        );
+        let (t0, t1) = (0.20376433010429817, 1.2625681845974506);
+        let opts = ToiOptions {
+            stop_at_penetration: true,
+            ..ToiOptions::default()
+        };
+        let r = time_of_impact_halfspace(&e, &mc, &hs, &mh, t0, t1, &opts).unwrap();
+        assert!(
+            (t0..=t1).contains(&r.time),
+            "{:?} at {} outside [{t0}, {t1}]",
+            r.status,
+            r.time
+        );
     }
 }
