@@ -163,7 +163,8 @@ impl<'a> Sweep<'a> {
             to_target,
             stop,
         };
-        (p0.is_finite() && w.is_finite()).then_some(pair)
+        // |w|² enters the quadratics: a speed whose square overflows is the general path's.
+        (p0.is_finite() && w.length_squared().is_finite()).then_some(pair)
     }
 
     /// `p` in the ellipse's axes.
@@ -296,13 +297,16 @@ impl<'a> Sweep<'a> {
                 let q = self.local(p);
                 Vector::new(q.x / self.a, q.y / self.b)
             };
-            let mapped = [map(vertex)];
+            let (mapped, w) = ([map(vertex)], map(self.w));
+            if !(mapped[0].is_finite() && w.length_squared().is_finite()) {
+                return None;
+            }
             let core = Core {
                 vertices: &mapped,
                 normals: &[],
                 radius: 0.0,
             };
-            return Some(first_entry(&core, map(self.p0), map(self.w), until, 1.0));
+            return Some(first_entry(&core, map(self.p0), w, until, 1.0));
         }
         // Newton's iteration from the entry into the circle of radius max(a, b) + g about vⱼ.
         let outer = self.reach + grow;
