@@ -568,6 +568,7 @@ fn level_entry(p: &DiscPair, p0: Vector, seen: Seen, reach: Real, span: Real, to
 }
 
 mod translating;
+mod translating_ellipse;
 
 pub(crate) use translating::translating_cast;
 

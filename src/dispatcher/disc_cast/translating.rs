@@ -45,13 +45,33 @@ use parry2d_f64::query::{ShapeCastHit, Unsupported};
 use parry2d_f64::shape::ShapeType;
 
 /// rapier's cast of `c` when neither body turns and the body (shape 1) is a polygon, in closed
-/// form (module docs); `None` where the general path answers.
+/// form (module docs), or an ellipse ([`super::translating_ellipse`]); `None` where the general
+/// path answers.
 pub(crate) fn translating_cast(
     c: &NonlinearCast,
     opts: &ToiOptions,
 ) -> Option<Result<Option<ShapeCastHit>, Unsupported>> {
+    if !translating_guards(c, opts) {
+        return None;
+    }
+    let mut body_scratch = SupportScratch::default();
+    match support_shape(c.g1, &mut body_scratch)? {
+        SupportShape::Polygon {
+            vertices,
+            normals,
+            radius,
+        } => polygon_cast(c, opts, vertices, normals, radius),
+        SupportShape::Ellipse(a, b) => super::translating_ellipse::ellipse_cast(c, opts, a, b),
+        _ => None,
+    }
+}
+
+/// What both closed forms of a pair that does not turn ask of the cast `c`: neither body turns,
+/// one of them is this crate's, finite motions from start poses parry can use, a finite
+/// non-negative target distance and tolerance, a window.
+fn translating_guards(c: &NonlinearCast, opts: &ToiOptions) -> bool {
     let ours = |t: ShapeType| t == ShapeType::Custom;
-    let ok = c.m1.angvel == 0.0
+    c.m1.angvel == 0.0
         && c.m2.angvel == 0.0
         && (ours(c.g1.shape_type()) || ours(c.g2.shape_type()))
         && motion_is_finite(c.m1)
@@ -62,26 +82,30 @@ pub(crate) fn translating_cast(
         && opts.target_distance.is_finite()
         && opts.distance_tolerance >= 0.0
         && opts.distance_tolerance.is_finite()
-        && is_window(c.t0, c.t1);
-    if !ok {
-        return None;
-    }
-    let mut body_scratch = SupportScratch::default();
-    let SupportShape::Polygon {
-        vertices,
-        normals,
-        radius: r_p,
-    } = support_shape(c.g1, &mut body_scratch)?
-    else {
-        return None;
-    };
+        && is_window(c.t0, c.t1)
+}
+
+/// Whether a radius or a bounding sphere's radius is one the contact query reads (finite, not
+/// negative), for the body's and the target's radii and both bounding spheres of `c`.
+pub(super) fn sizes_ok(c: &NonlinearCast, radii: &[Real]) -> bool {
+    let size_ok = |r: Real| r.is_finite() && r >= 0.0;
+    radii.iter().all(|r| size_ok(*r)) && c.spheres.iter().all(|b| size_ok(b.radius) && b.center.is_finite())
+}
+
+/// The polygon body's closed form (module docs): its core `vertices` and `normals` and radius
+/// `r_p`.
+fn polygon_cast(
+    c: &NonlinearCast,
+    opts: &ToiOptions,
+    vertices: &[Vector],
+    normals: &[Vector],
+    r_p: Real,
+) -> Option<Result<Option<ShapeCastHit>, Unsupported>> {
     let mut target_scratch = SupportScratch::default();
     let target = Core::of(c.g2, &mut target_scratch)?;
     // Shapes the contact query would refuse are the general path's (it answers them as it
     // always has).
-    let size_ok = |r: Real| r.is_finite() && r >= 0.0;
-    if !(size_ok(r_p) && size_ok(target.radius) && c.spheres.iter().all(|b| size_ok(b.radius) && b.center.is_finite()))
-    {
+    if !sizes_ok(c, &[r_p, target.radius]) {
         return None;
     }
     let delta = opts.target_distance;
@@ -115,7 +139,7 @@ const SPHERE_ROUNDING: Real = 1e-9;
 /// their translations alone) stay more than `level` apart over the whole window: then no
 /// impact, whatever the shapes inside them. The closest approach of the two centres, on the
 /// segment of their relative motion, with a margin for its rounding.
-fn spheres_pass(c: &NonlinearCast, level: Real) -> bool {
+pub(super) fn spheres_pass(c: &NonlinearCast, level: Real) -> bool {
     let centre =
         |m: &parry2d_f64::query::NonlinearRigidMotion, k: usize| m.start * c.spheres[k].center + m.linvel * c.t0;
     let d0 = centre(c.m1, 0) - centre(c.m2, 1);
@@ -282,7 +306,7 @@ impl<'a> Translating<'a> {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
     use crate::dispatcher::SmoothDispatcher;
     use crate::numerics::math::Pose;
@@ -291,7 +315,7 @@ mod tests {
     use parry2d_f64::query::NonlinearRigidMotion;
     use parry2d_f64::shape::{Ball, Capsule, ConvexPolygon, Cuboid, RoundCuboid, Segment, Shape, Triangle};
 
-    /// Targets of every kind the closed form reads: boxes (thin ones too), a segment, a
+    /// Targets of every kind the closed forms read: boxes (thin ones too), a segment, a
     /// triangle, a convex polygon, a rounded box, this crate's polygons, a ball, a capsule.
     fn targets() -> Vec<Box<dyn Shape>> {
         let hull = |pts: &[Vector]| ConvexPolygon::from_convex_hull(pts).unwrap();
@@ -336,17 +360,45 @@ mod tests {
         }
     }
 
-    /// The closed form against the general path on thousands of random casts of a body that
-    /// does not turn: the same hit or miss and status, the same time (within 1e-12 of the
-    /// window, or within the distance tolerance the general path accepts, τ/|D′|); its
-    /// witnesses on each shape's boundary and apart along the normal by the pair's distance.
-    #[test]
-    fn casts_of_a_polygon_that_does_not_turn_answer_as_the_general_path() {
-        let mut rng = Lcg(41);
+    /// The distance of a point to the boundary of a polygon, a segment or a disc, from its core
+    /// as the contact query reads it (parry's hollow projection of a point on a
+    /// `ConvexPolygon`'s edge lands inside: not a reference here).
+    fn off_boundary(s: &dyn Shape, p: Vector) -> Real {
+        let mut scratch = SupportScratch::default();
+        match support_shape(s, &mut scratch).unwrap() {
+            SupportShape::Polygon {
+                vertices,
+                normals,
+                radius,
+            } => (super::super::polygon_point_distance(vertices, normals, p) - radius).abs(),
+            SupportShape::Disc(r) => (p.length() - r).abs(),
+            _ => unreachable!(),
+        }
+    }
+
+    /// What [`against_the_general_path`] counted: the closed form's hits and misses, and the
+    /// casts it left to the general path.
+    pub(in crate::dispatcher::disc_cast) struct Checked {
+        pub hits: usize,
+        pub misses: usize,
+        pub general: usize,
+    }
+
+    /// A closed form of a pair that does not turn ([`translating_cast`]) against the general
+    /// path on 600 random casts per target of [`targets`], bodies from `body` (`on_body`: a
+    /// body's distance to a point of its frame, for its witness): the same hit or miss and
+    /// status, the same time (within 1e-12 of the window, or within the distance tolerance the
+    /// general path accepts, τ/|D′|); its witnesses on each shape's boundary and apart along
+    /// the normal by the pair's distance.
+    pub(in crate::dispatcher::disc_cast) fn against_the_general_path<B: Shape>(
+        rng: &mut Lcg,
+        body: &mut impl FnMut(&mut Lcg) -> B,
+        on_body: impl Fn(&B, Vector) -> Real,
+    ) -> Checked {
         let (mut hits, mut misses, mut general) = (0, 0, 0);
         for target in targets() {
             for _ in 0..600 {
-                let b = body(&mut rng);
+                let b = body(rng);
                 let reach = target.compute_local_bounding_sphere().radius + b.compute_local_bounding_sphere().radius;
                 let pose2 = Pose::new(
                     Vector::new(rng.range(-2.0, 2.0), rng.range(-2.0, 2.0)),
@@ -413,23 +465,8 @@ mod tests {
                     m1.position_at_time(f.time_of_impact),
                     m2.position_at_time(f.time_of_impact),
                 );
-                // The signed distance of a point to the shape, from its core as the contact
-                // query reads it (parry's hollow projection of a point on a `ConvexPolygon`'s
-                // edge lands inside: not a reference here).
-                let on = |s: &dyn Shape, p: Vector| {
-                    let mut scratch = SupportScratch::default();
-                    match support_shape(s, &mut scratch).unwrap() {
-                        SupportShape::Polygon {
-                            vertices,
-                            normals,
-                            radius,
-                        } => (super::super::polygon_point_distance(vertices, normals, p) - radius).abs(),
-                        SupportShape::Disc(r) => (p.length() - r).abs(),
-                        _ => unreachable!(),
-                    }
-                };
-                assert!(on(&b, f.witness1) <= 1e-9 * c.size(), "{what}: {f:?}");
-                assert!(on(&*target, f.witness2) <= 1e-9 * c.size(), "{what}: {f:?}");
+                assert!(on_body(&b, f.witness1) <= 1e-9 * c.size(), "{what}: {f:?}");
+                assert!(off_boundary(&*target, f.witness2) <= 1e-9 * c.size(), "{what}: {f:?}");
                 let gap = (p1 * f.witness1 - p2 * f.witness2).length();
                 assert!(gap <= 1e-9 * c.size() + tol, "{what}: witnesses {gap} apart: {f:?}");
                 let n1 = p1.rotation * f.normal1;
@@ -438,6 +475,16 @@ mod tests {
                 assert!((n2.length() - 1.0).abs() <= 1e-12, "{what}: {f:?}");
             }
         }
+        Checked { hits, misses, general }
+    }
+
+    /// [`against_the_general_path`] for polygon bodies: sharp and rounded regular polygons and
+    /// slivers.
+    #[test]
+    fn casts_of_a_polygon_that_does_not_turn_answer_as_the_general_path() {
+        let mut rng = Lcg(41);
+        let on_body = |b: &RoundedPolygon, p: Vector| off_boundary(b, p);
+        let Checked { hits, misses, general } = against_the_general_path(&mut rng, &mut body, on_body);
         println!("translating casts: {hits} hits, {misses} misses, {general} left to the general path");
         assert!(hits > 1500 && misses > 1500, "{hits} hits, {misses} misses");
     }
