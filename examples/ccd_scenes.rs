@@ -5,7 +5,8 @@
 //! run headless in rapier2d-f64 with `SmoothDispatcher` and, side by side, with rapier's default
 //! narrow phase on parry's closest shapes. Prints one table by family: cases, bodies through a
 //! wall, frozen bodies, NaN, panics, the deepest penetration after a CCD-swept step and the mean
-//! step time (with the ratio, this crate's over rapier's), then the cases that failed.
+//! step time (with the ratio, this crate's over rapier's), with the suite's totals over all cases
+//! and over the cases neither method fails, then the cases that failed.
 //!
 //! Run: `cargo run --release --example ccd_scenes` (optionally a family name, dashes for spaces,
 //! to run only it, `--no-recycling` to run with rapier's contact recycling off, and
