@@ -882,6 +882,43 @@ fn halfspace_cast_answers_alike_on_every_time_scale() {
     println!("half-space casts on 51 time scales: {checked}, {unrepresentable} Degenerate (a rate of distance beyond f64), the rest as on the ordinary scale");
 }
 
+/// Hostile seed 5106, case 1659: a capsule-ellipse (1153, 248, 1626) turning at −1.8e302 rad/s
+/// and moving at 8.3e306 m/s against a half-space turning at −6.0e302 rad/s and moving at
+/// 5.3e306 m/s, over a window of 8.3e-304 s (3.4e-301 s after 0): the steps' bounds overflowed
+/// and the cast answered `Degenerate`, where the same motion on a time scale 2^−1000 slower
+/// answers `NoHit`. The half-space cast now asks such rates on a rescaled time, as
+/// `time_of_impact` does: the same answer on both scales.
+#[test]
+fn halfspace_cast_at_speeds_near_the_largest_float_answers_as_on_an_ordinary_time_scale() {
+    let shape = CapsuleEllipse::new(1153.3140806495276, 247.99646258840284, 1625.8808178461309);
+    let plane = HalfSpace::new(Vector::new(2.50617742176697f64.cos(), 2.50617742176697f64.sin()));
+    let m1 = NonlinearRigidMotion::new(
+        Pose::IDENTITY,
+        Vector::new(-532.278763160718, 675.8979939503903),
+        Vector::new(8.278734823079186e306, -2.2096967042384525e304),
+        -1.8227849416608437e302,
+    );
+    let m2 = NonlinearRigidMotion::new(
+        Pose::from_parts(
+            Vector::new(159.61864580987213, -1662.173976309729),
+            parry2d_f64::math::Rotation::from_cos_sin_unchecked(-0.8827046285351703, 0.46992822724602007),
+        ),
+        Vector::ZERO,
+        Vector::new(4.122629139791279e306, 3.2764118478829426e306),
+        -6.0386591952442085e302,
+    );
+    let (t0, t1) = (3.417310090086945e-301, 3.4256241776342636e-301);
+    let o = ToiOptions::default().with_stop_at_penetration(true);
+    let fast = time_of_impact_halfspace(&shape, &m1, &plane, &m2, t0, t1, &o).unwrap();
+    let s = 2f64.powi(-1000);
+    let slow =
+        |m: &NonlinearRigidMotion| NonlinearRigidMotion::new(m.start, m.local_center, m.linvel * s, m.angvel * s);
+    let base = time_of_impact_halfspace(&shape, &slow(&m1), &plane, &slow(&m2), t0 / s, t1 / s, &o).unwrap();
+    assert_eq!(fast.status, base.status);
+    assert_eq!(fast.status, smooth_ccd2d::ToiStatus::NoHit);
+    assert!((fast.time / t1 - 1.0).abs() <= 1e-12, "{} vs {}", fast.time, t1);
+}
+
 // ---------------------------------------------------------------------------------------------
 // The checks of a user's curve
 // ---------------------------------------------------------------------------------------------

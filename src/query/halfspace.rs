@@ -28,6 +28,7 @@ use crate::numerics::math::{perp, unit_or_x, Pose, Vector};
 use crate::numerics::motion::{motion_is_finite, RelativeMotion};
 use crate::query::stationary::{DistanceStatus, StationaryDistance};
 use crate::query::stepping::CONTACT_FLOOR;
+use crate::query::time_scale::rescaled;
 use crate::query::toi::{TimeOfImpact, ToiCost, ToiOptions, ToiStatus};
 use parry2d_f64::query::NonlinearRigidMotion;
 use parry2d_f64::shape::HalfSpace;
@@ -168,6 +169,13 @@ pub fn time_of_impact_halfspace(
     t1: f64,
     opts: &ToiOptions,
 ) -> Result<TimeOfImpact, QueryError> {
+    // Rates beyond 2^±64 per second: the same query on a time scale where they are about 1
+    // (`query::time_scale`), as `time_of_impact` asks it (hostile seed 5106, case 1659: speeds of
+    // 8e306 m/s over a window of 3e-301 s overflowed the steps' bounds, `Degenerate`, where the
+    // same motion on the unscaled time answers `NoHit`).
+    if let Some(r) = rescaled(mc, mh, t0, t1, curve.bounding_radius()) {
+        return finite(toi_halfspace(curve, &r.m1, hs, &r.m2, r.t0, r.t1, opts).map(|a| r.answer(a)));
+    }
     finite(toi_halfspace(curve, mc, hs, mh, t0, t1, opts))
 }
 
