@@ -138,6 +138,88 @@ fn impacts_are_on_target_first_and_symmetric() {
     );
 }
 
+/// rapier's cast of a body that does not turn (an ellipse or a polygon, sharp or rounded, the
+/// closed forms of `SmoothDispatcher`) against a target at rest (a box, a segment, a ball, a
+/// capsule), at scales 1e-3 to 1e3: at a hit the exact distance is within the tolerance of 0 and
+/// positive at every earlier sampled time; at no hit it never goes below the tolerance's band.
+/// The distances from the dispatcher's `distance` query (the exact contact, not the cast).
+#[test]
+fn casts_of_bodies_that_do_not_turn_touch_first_at_every_scale() {
+    use parry2d_f64::query::QueryDispatcher;
+    use parry2d_f64::shape::{Ball, Capsule, Cuboid, Segment, Shape};
+    use smooth_ccd2d::SmoothDispatcher;
+    let (hits, misses) = (AtomicUsize::new(0), AtomicUsize::new(0));
+    let bodies = (0u8..3, -3.0f64..3.0, 0.02f64..1.0, 3usize..9, 0.0f64..0.3, -3.2f64..3.2);
+    let motions = (
+        0u8..4,
+        -3.2f64..3.2,
+        -3.2f64..3.2,
+        1.05f64..3.0,
+        -1.2f64..1.2,
+        0.2f64..2.0,
+    );
+    run_property(
+        "casts of bodies that do not turn touch first at every scale",
+        (bodies, motions),
+        |((kind, log_scale, ratio, sides, r, angle), (target_kind, dir, target_angle, away, aim, reach_factor))| {
+            let s = 10f64.powf(log_scale);
+            let body: Box<dyn Shape> = match kind {
+                0 => Box::new(Ellipse::new(s, s * ratio)),
+                1 => Box::new(Ellipse::new(s * ratio, s)),
+                _ => Box::new(RoundedPolygon::regular(sides, s, s * r)),
+            };
+            let target: Box<dyn Shape> = match target_kind {
+                0 => Box::new(Cuboid::new(Vector::new(1.5 * s, 0.1 * s))),
+                1 => Box::new(Segment::new(Vector::new(-s, 0.2 * s), Vector::new(s, -0.3 * s))),
+                2 => Box::new(Ball::new(0.6 * s)),
+                _ => Box::new(Capsule::new(
+                    Vector::new(-0.5 * s, 0.0),
+                    Vector::new(0.7 * s, 0.3 * s),
+                    0.2 * s,
+                )),
+            };
+            let reach = body.compute_local_bounding_sphere().radius + target.compute_local_bounding_sphere().radius;
+            let start = Vector::new(dir.cos(), dir.sin()) * (away * reach);
+            let aim_at = Vector::new(-start.y, start.x).normalize() * (aim * reach);
+            let dt = 1.0 / 60.0;
+            let v = (aim_at - start) * (reach_factor / dt);
+            let m1 = NonlinearRigidMotion::new(Pose::new(start, angle), Vector::ZERO, v, 0.0);
+            let pose2 = Pose::new(Vector::ZERO, target_angle);
+            let m2 = NonlinearRigidMotion::constant_position(pose2);
+            let d = SmoothDispatcher::default();
+            let hit = d
+                .cast_shapes_nonlinear(&m1, &*body, &m2, &*target, 0.0, dt, false)
+                .unwrap();
+            let dist_at = |t: f64| {
+                let pos12 = m1.position_at_time(t).inv_mul(&pose2);
+                d.distance(&pos12, &*body, &*target).unwrap().distance
+            };
+            let tol = 1e-9 * reach;
+            match hit {
+                Some(h) => {
+                    hits.fetch_add(1, Ordering::Relaxed);
+                    let t = h.time_of_impact;
+                    prop_assert!((0.0..=dt).contains(&t), "time {}", t);
+                    prop_assert!(dist_at(t) <= tol, "distance at the hit {} (size {})", dist_at(t), reach);
+                    for k in 0..50 {
+                        prop_assert!(dist_at(t * k as f64 / 50.0) > 0.0, "an earlier contact");
+                    }
+                }
+                None => {
+                    misses.fetch_add(1, Ordering::Relaxed);
+                    for k in 0..=100 {
+                        prop_assert!(dist_at(dt * k as f64 / 100.0) > -tol, "a missed contact");
+                    }
+                }
+            }
+            Ok(())
+        },
+    );
+    let (hits, misses) = (hits.into_inner(), misses.into_inner());
+    println!("  {hits} hits, {misses} misses");
+    assert!(hits >= 100 && misses >= 100, "{hits} hits, {misses} misses");
+}
+
 /// Constructors never panic through `try_*` and never yield a shape from bad numbers.
 #[test]
 fn try_constructors_reject_bad_numbers_without_panicking() {
