@@ -211,17 +211,33 @@ impl<'a> Sweep<'a> {
                 best = (d, Piece::Vertex(j));
             }
         }
-        let n = vs.len();
-        for i in 0..if n >= 2 { n } else { 0 } {
+        for i in 0..self.edge_count() {
             let (h, s) = self.support(ns[i]);
-            let e = vs[if i + 1 == n { 0 } else { i + 1 }] - vs[i];
-            let along = (x - s - vs[i]).dot(e);
             let d = ns[i].dot(x - vs[i]) - h - rho;
-            if d >= 0.0 && (0.0..=e.length_squared()).contains(&along) && d < best.0 {
+            if d >= 0.0 && self.faces_edge(i, x, s) && d < best.0 {
                 best = (d, Piece::Edge(i));
             }
         }
         best
+    }
+
+    /// How many edges the target's core has: vᵢ → vᵢ₊₁ around a polygon, a segment's both ways
+    /// (its two normals), none for a point.
+    fn edge_count(&self) -> usize {
+        let n = self.target.vertices.len();
+        if n >= 2 {
+            n
+        } else {
+            0
+        }
+    }
+
+    /// Whether the centre at `x` faces edge `i` moved out by E: its foot x − s_E(n) (`support`,
+    /// E's support point along the edge's normal) projects within the edge.
+    fn faces_edge(&self, i: usize, x: Vector, support: Vector) -> bool {
+        let vs = self.target.vertices;
+        let e = vs[if i + 1 == vs.len() { 0 } else { i + 1 }] - vs[i];
+        (0.0..=e.length_squared()).contains(&(x - support - vs[i]).dot(e))
     }
 
     /// The support separation of the pair along the unit `axis` (from the target towards the
@@ -258,11 +274,10 @@ impl<'a> Sweep<'a> {
     fn first_entry(&self, span: Real, level: Real) -> Option<Option<(Real, Piece)>> {
         let (vs, ns) = (self.target.vertices, self.target.normals);
         let grow = self.target.radius + level;
-        let n = vs.len();
         let mut first: Option<(Real, Piece)> = None;
         let before = |first: &Option<(Real, Piece)>| first.map_or(span, |(s, _)| s);
         // The edges moved out by h_K(n), crossed inwards within their extent.
-        for i in 0..if n >= 2 { n } else { 0 } {
+        for i in 0..self.edge_count() {
             let (h, support) = self.support(ns[i]);
             let above = ns[i].dot(self.p0 - vs[i]) - h - grow;
             let rate = ns[i].dot(self.w);
@@ -270,12 +285,8 @@ impl<'a> Sweep<'a> {
                 continue;
             }
             let s = above / -rate;
-            if s < before(&first) {
-                let e = vs[if i + 1 == n { 0 } else { i + 1 }] - vs[i];
-                let along = (self.p0 + self.w * s - support - vs[i]).dot(e);
-                if (0.0..=e.length_squared()).contains(&along) {
-                    first = Some((s, Piece::Edge(i)));
-                }
+            if s < before(&first) && self.faces_edge(i, self.p0 + self.w * s, support) {
+                first = Some((s, Piece::Edge(i)));
             }
         }
         // The vertex sets.
