@@ -882,6 +882,33 @@ fn halfspace_cast_answers_alike_on_every_time_scale() {
     println!("half-space casts on 51 time scales: {checked}, {unrepresentable} Degenerate (a rate of distance beyond f64), the rest as on the ordinary scale");
 }
 
+/// Hostile seed 5105, case 1153: a rounded 100,000-gon (radius 169, corners 29) turning at
+/// −52 rad/s against a `CapsuleEllipse` turning at 38 rad/s over a window of 9.3 s, 140 turns
+/// of one relative to the other. Each exact distance of the gap tracker walked from the last
+/// axis across the polygon's tiny normal cones one at a time, about 19,000 of them a call: 3.8 s
+/// for a time of impact, past the fuzz's 2 s limit. The walk now jumps ahead where it is long
+/// (O(log n) support searches): every query of the case well within the limit, its promises
+/// kept.
+#[test]
+fn a_cast_of_a_many_sided_polygon_turning_many_times_answers_well_within_the_call_limit() {
+    use reliability::hostile::{compare, hostile};
+    let (case, expect) = hostile(5105, 1153);
+    assert_eq!(case.class, "huge-polygon");
+    let mut out = reliability::run_case(&case);
+    out.violations.extend(compare(&case, &expect));
+    assert!(out.violations.is_empty(), "{:?}", out.violations);
+    println!(
+        "hostile 5105/1153: slowest call {:?} ({})",
+        out.slowest.0, out.slowest.1
+    );
+    assert!(
+        out.slowest.0 < reliability::CALL_LIMIT / 4,
+        "slowest call {:?} ({})",
+        out.slowest.0,
+        out.slowest.1
+    );
+}
+
 /// Hostile seed 5106, case 1659: a capsule-ellipse (1153, 248, 1626) turning at −1.8e302 rad/s
 /// and moving at 8.3e306 m/s against a half-space turning at −6.0e302 rad/s and moving at
 /// 5.3e306 m/s, over a window of 8.3e-304 s (3.4e-301 s after 0): the steps' bounds overflowed

@@ -15,7 +15,13 @@
 //! starts at a given axis (the last step's), and moves towards the rising side interval by
 //! interval: the closed-form peak when it lies inside the interval, else a safeguarded Newton
 //! solve of S = 0 when S changes sign before the interval's end, else across the kink unless G
-//! falls after it. A handful of intervals along a tracked path.
+//! falls after it. A handful of intervals along a tracked path. Where the axis has moved far
+//! since the last call across a side of many small cones (a polygon of 10⁵ vertices), the walk,
+//! after 16 intervals, jumps ahead by doubling turns while G still rises (S keeps its sign
+//! there: on the concave part of G, S increases with θ), the supports at each jump found by a
+//! binary search of the polygon's normals, and goes on interval by interval from the last jump
+//! that still rises: O(log n) jumps in place of n intervals, and the same tests decide where it
+//! stops.
 //!
 //! **Overlapping shapes.** A local maximum with G > −(r₁ + r₂), rᵢ the smallest radii of
 //! curvature, is still global: each side is a body swelled by a disc of radius rᵢ, whose gap
@@ -109,6 +115,18 @@ const SIDE_TOL: f64 = 1e-14;
 const ANGLE_TOL: f64 = 1e-15;
 /// … or after this many iterations.
 const NEWTON_STEPS: usize = 60;
+/// After this many intervals the walk tries to jump ahead ([`Pair::gallop`]): every ordinary
+/// walk (a handful of intervals) is left as it was, and a walk across the tiny cones of a
+/// polygon of 10⁵ vertices (thousands of intervals when the axis has moved far since the last
+/// call) takes O(log n) jumps instead.
+const GALLOP_AFTER: usize = 16;
+#[cfg(test)]
+thread_local! {
+    /// The intervals the walks of this thread have visited (tests read it).
+    pub(crate) static WALK_INTERVALS: core::cell::Cell<usize> = const { core::cell::Cell::new(0) };
+}
+/// The smallest first jump of [`Pair::gallop`] (radians): degenerate cones of width 0.
+const GALLOP_MIN_STEP: f64 = 1e-9;
 /// Directions the branch and bound of a deep penetration starts from.
 const SEEDS: usize = 32;
 /// Capacity of the branch and bound's node stack (depth-first over sorted nodes).
@@ -246,7 +264,9 @@ impl<'a> Pair<'a> {
         let size = s1.radius_about(Vector::ZERO).max(s2.radius_about(Vector::ZERO));
         let mut u = u0;
         let (mut i, mut j) = self.features(fr, u, hint);
-        for _ in 0..2 * (s1.features() + s2.features()) + 8 {
+        for steps in 0..2 * (s1.features() + s2.features()) + 8 {
+            #[cfg(test)]
+            WALK_INTERVALS.with(|c| c.set(c.get() + 1));
             let (lo1, hi1, k1) = self.offsets(fr, 0, i, u);
             let (lo2, hi2, k2) = self.offsets(fr, 1, j, u);
             let (o_lo, o_hi) = (lo1.max(lo2), hi1.min(hi2));
@@ -305,6 +325,15 @@ impl<'a> Pair<'a> {
                     up
                 }
             };
+            // A long walk (a side of many small cones, an axis far from the last one): ahead
+            // by doubling jumps while G still rises, then on interval by interval.
+            if steps >= GALLOP_AFTER {
+                if let Some((ug, ig, jg)) = self.gallop(fr, u, (i, j), o_hi - o_lo, rising_up) {
+                    u = ug;
+                    (i, j) = (ig, jg);
+                    continue;
+                }
+            }
             // Cross to the boundary on the rising side: a kink of either side, or (a curve with
             // no face) a free boundary where the walk goes on with the same features.
             let (o_b, on1, on2) = if rising_up {
@@ -346,6 +375,42 @@ impl<'a> Pair<'a> {
             (i, j) = (ni, nj);
         }
         None
+    }
+
+    /// The furthest axis ahead of `u` on the rising side (`up`: counter-clockwise) at which G
+    /// still rises (S < 0 going up, S > 0 going down), among the turns 2w, 4w, 8w, … up to π/2
+    /// (w the width of the current interval, at least [`GALLOP_MIN_STEP`]), with its features;
+    /// `None` when G no longer rises two widths ahead. Only where the walk goes on from: the
+    /// walk's own tests at the axis it ends on decide the maximum, so a jump changes which
+    /// intervals it visits, not what it answers.
+    fn gallop(
+        &self,
+        fr: &GapFrame,
+        u: Vector,
+        f: (usize, usize),
+        width: f64,
+        up: bool,
+    ) -> Option<(Vector, usize, usize)> {
+        let sign = if up { 1.0 } else { -1.0 };
+        let mut best = None;
+        let mut hint = f;
+        let mut step = (2.0 * width).max(GALLOP_MIN_STEP);
+        while step <= FRAC_PI_2 {
+            let kappa = turn(u, sign * step);
+            let (i, j) = (
+                self.sides[0].feature_far(self.body_dir(fr, 0, kappa), hint.0),
+                self.sides[1].feature_far(self.body_dir(fr, 1, kappa), hint.1),
+            );
+            let (_, side, _) = self.supports(fr, kappa, [i, j], [At::Inside; 2]).gap(kappa);
+            let rises = if up { side < 0.0 } else { side > 0.0 };
+            if !rises {
+                break;
+            }
+            best = Some((kappa, i, j));
+            hint = (i, j);
+            step *= 2.0;
+        }
+        best
     }
 
     /// The root of S on the interval [u + lo, u + hi] of features f (S(lo) < 0 < S(hi)):

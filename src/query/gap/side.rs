@@ -32,6 +32,10 @@ pub(crate) struct PolySide<'a> {
     reach: Option<f64>,
 }
 
+/// [`PolySide::support_index_far`] climbs from its hint on polygons of at most twice this many
+/// vertices (a climb of at most this many moves).
+const CLIMB_BEFORE_SEARCH: usize = 8;
+
 /// See [`PolySide::reach`].
 const REACH_ONCE_ABOVE: usize = 32;
 
@@ -101,6 +105,34 @@ impl<'a> PolySide<'a> {
             }
         }
         i
+    }
+
+    /// [`PolySide::support_index`] for a direction `m` that may be far from the one of `hint`:
+    /// the hill climb on a polygon of at most 2·[`CLIMB_BEFORE_SEARCH`] vertices or where `hint`
+    /// is already the support, else a binary search of the edge normals (counter-clockwise, so their angles from e₀ increase: vertex i
+    /// is the support of the directions in [eᵢ₋₁, eᵢ]) finished by a climb from its answer
+    /// (rounding of the angles). O(log n) for any m.
+    pub(crate) fn support_index_far(&self, m: Vector, hint: usize) -> usize {
+        let n = self.verts.len();
+        let i = if hint < n { hint } else { 0 };
+        let near =
+            |k: usize| self.verts[k].dot(m) >= self.verts[self.next(k)].dot(m).max(self.verts[self.prev(k)].dot(m));
+        if n <= 2 * CLIMB_BEFORE_SEARCH || near(i) {
+            return self.support_index(m, i);
+        }
+        let e0 = self.normals[0];
+        let target = ccw_angle(e0, m);
+        // The first k ≥ 1 with angle(e₀, e_k) ≥ target; n when none (vertex 0's cone).
+        let (mut lo, mut hi) = (1, n);
+        while lo < hi {
+            let mid = lo + (hi - lo) / 2;
+            if ccw_angle(e0, self.normals[mid]) >= target {
+                hi = mid;
+            } else {
+                lo = mid + 1;
+            }
+        }
+        self.support_index(m, if lo == n { 0 } else { lo })
     }
 
     /// The largest distance from `c` to the boundary (the core's furthest vertex plus the radius).
@@ -227,6 +259,15 @@ impl<'a> Side<'a> {
                 }
                 start
             }
+        }
+    }
+
+    /// [`Side::feature_of`] for a direction that may be far from the one of `hint`: O(log n) on
+    /// a polygon ([`PolySide::support_index_far`]).
+    pub(crate) fn feature_far(&self, m: Vector, hint: usize) -> usize {
+        match self {
+            Side::Poly(p) => p.support_index_far(m, hint),
+            Side::Curve(_) => self.feature_of(m, hint),
         }
     }
 
