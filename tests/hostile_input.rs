@@ -909,6 +909,63 @@ fn a_cast_of_a_many_sided_polygon_turning_many_times_answers_well_within_the_cal
     );
 }
 
+/// Fuzz seed 5032, case 79067 (`crates/dev/tests/adversarial.rs`): a thin ellipse and a
+/// compound of one ellipse, 0.1 m apart and moving side by side at 1e20 m/s, cast over half a
+/// second. The pair goes to parry's composite cast, which saw positions of 1e19 m — rounded by
+/// 1e3 m, ten thousand times the bodies — and its advancement, moved by that rounding at every
+/// step, ran for ever (more than 20 s); with the compound first, on the time scale the
+/// dispatcher takes for rates beyond 2^64 (a window of 5.7e20 s), parry's absolute time
+/// tolerances did the same. Parry's casts now get the motions seen from the body that does not
+/// turn (`input_guard::resolved_motions`) and the caller's time scale: the answer at once, the
+/// same as for the same relative motion near the origin.
+#[test]
+fn a_composite_cast_of_bodies_side_by_side_at_1e20_m_per_s_answers_at_once() {
+    let ellipse = Ellipse::new(0.00043654616129277564, 0.06672093399598593);
+    let part = Pose::new(
+        Vector::new(0.033360466997992964, 0.0),
+        (-0.9165356509417905f64).atan2(0.39995299792939215),
+    );
+    let compound = Compound::new(vec![(
+        part,
+        SharedShape::new(Ellipse::new(0.04003256039759156, 0.02001628019879578)),
+    )]);
+    let turned = (0.9869190977011687f64).atan2(0.1612162975406362);
+    let cast = |shift: Vector, common: Vector| {
+        let m1 = NonlinearRigidMotion::new(
+            Pose::translation(-shift.x, -shift.y),
+            Vector::new(-0.009055778579886117, -0.008097205025047445),
+            common + Vector::new(0.0, 0.5609752929646611),
+            0.0,
+        );
+        let m2 = NonlinearRigidMotion::new(
+            Pose::new(Vector::new(0.01346469952869244, -0.10048141844158512) - shift, turned),
+            Vector::ZERO,
+            common + Vector::new(0.0, 0.3623689006538127),
+            -0.0,
+        );
+        // Both orders (the compound first: a window rescaled for the rates of 1e20 m/s, which
+        // parry's composite helper must not get).
+        let d = SmoothDispatcher::default();
+        let t = Instant::now();
+        let hits = [
+            d.cast_shapes_nonlinear(&m1, &ellipse, &m2, &compound, 0.0, 0.4831652517656168, false),
+            d.cast_shapes_nonlinear(&m1, &compound, &m2, &ellipse, 0.0, 0.4831652517656168, false),
+        ];
+        (hits, t.elapsed())
+    };
+    let (fast, took) = cast(Vector::ZERO, Vector::new(1e20, 0.0));
+    assert!(took < reliability::CALL_LIMIT / 4, "{took:?}");
+    // The same relative motion near the origin (the compound at rest there): overlapping at the
+    // start and parting, no hit with `stop_at_penetration = false`.
+    let (slow, _) = cast(
+        Vector::new(0.01346469952869244, -0.10048141844158512),
+        Vector::new(0.0, -0.3623689006538127),
+    );
+    for hit in fast.iter().chain(&slow) {
+        assert_eq!(hit.as_ref().map(|h| h.is_none()), Ok(true), "{fast:?} {slow:?}");
+    }
+}
+
 /// Hostile seed 5106, case 1659: a capsule-ellipse (1153, 248, 1626) turning at −1.8e302 rad/s
 /// and moving at 8.3e306 m/s against a half-space turning at −6.0e302 rad/s and moving at
 /// 5.3e306 m/s, over a window of 8.3e-304 s (3.4e-301 s after 0): the steps' bounds overflowed

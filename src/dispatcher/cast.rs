@@ -193,11 +193,13 @@ impl SmoothDispatcher {
         let size = c.size();
         // parry's own cast answers on the caller's time scale: its conservative advancement,
         // with absolute time tolerances, does not end over a rescaled window of 1e302 s (two
-        // points of radius 0 and 1e-300 passing at 100 m/s, fuzz seed 3004, case 157457).
+        // points of radius 0 and 1e-300 passing at 100 m/s, fuzz seed 3004, case 157457); nor
+        // does its composite helper's cast of bounding balls (a window of 5.7e20 s for bodies
+        // at 1e20 m/s, fuzz seed 5032, case 79067).
         let scaled = rescaled(c.m1, c.m2, c.t0, c.t1, size).filter(|_| {
             !matches!(
                 route_cast(c.g1, c.g2, &mut RouteScratch::default()),
-                Route::Parry { .. }
+                Route::Parry { .. } | Route::Composite
             )
         });
         let (m1, m2, t0, t1, scale) = match &scaled {
@@ -282,11 +284,18 @@ impl SmoothDispatcher {
             Route::Gap { c1, c2 } => self.cast_gap(c, &c1, &c2, &opts, rule),
             Route::HalfSpace { curve, hs, curve_first } => self.cast_halfspace(c, &curve, hs, curve_first, &opts, rule),
             // parry's composite helper casts bounding balls itself: the same guards as parry's casts.
-            Route::Composite => match input_guard::cast_window_ok(c.m1, c.g1, c.m2, c.g2, c.t0, c.t1) {
-                Ok(true) => input_guard::finite(composite_cast_nonlinear(
-                    self, c.m1, c.g1, c.m2, c.g2, c.t0, c.t1, c.stop,
-                )),
-                Ok(false) => Ok(None),
+            // Positions that rounding resolves (`input_guard::resolved_motions`), as for parry's.
+            Route::Composite => match input_guard::cast_window_ok(c.m1, c.g1, c.m2, c.g2, c.t0, c.t1).and_then(|ok| {
+                if ok {
+                    input_guard::resolved_motions(c.m1, c.g1, c.m2, c.g2, c.t0, c.t1)
+                } else {
+                    Ok(None)
+                }
+            }) {
+                Ok(Some((m1, m2))) => {
+                    input_guard::finite(composite_cast_nonlinear(self, &m1, c.g1, &m2, c.g2, c.t0, c.t1, c.stop))
+                }
+                Ok(None) => Ok(None),
                 Err(e) => Err(e),
             },
             Route::Parry { ours: true } if rule.start_contact => {

@@ -106,6 +106,11 @@ pub(crate) fn parry_cast_nonlinear(
         // A reversed window holds no time: no hit, as for the crate's own casts.
         return Ok(None);
     }
+    // Positions that rounding resolves (`input_guard::resolved_motions`).
+    let Some((m1, m2)) = input_guard::resolved_motions(m1, g1, m2, g2, t0, t1)? else {
+        return Ok(None);
+    };
+    let (m1, m2) = (&m1, &m2);
     let hit = if t0 == 0.0 {
         DefaultQueryDispatcher.cast_shapes_nonlinear(m1, g1, m2, g2, t0, t1, stop)?
     } else {
