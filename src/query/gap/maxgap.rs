@@ -381,8 +381,10 @@ impl<'a> Pair<'a> {
     /// still rises (S < 0 going up, S > 0 going down), among the turns 2w, 4w, 8w, … up to π/2
     /// (w the width of the current interval, at least [`GALLOP_MIN_STEP`]), with its features;
     /// `None` when G no longer rises two widths ahead. Only where the walk goes on from: the
-    /// walk's own tests at the axis it ends on decide the maximum, so a jump changes which
-    /// intervals it visits, not what it answers.
+    /// walk's own tests at the axis it ends on decide the maximum (and the certificate of
+    /// [`Pair::max_gap`] whether it is global), so a jump changes which intervals it visits,
+    /// not the maximum it finds (to rounding; of two flat sides in contact, the witnesses may
+    /// be another pair on the same faces).
     fn gallop(
         &self,
         fr: &GapFrame,

@@ -109,9 +109,9 @@ impl<'a> PolySide<'a> {
 
     /// [`PolySide::support_index`] for a direction `m` that may be far from the one of `hint`:
     /// the hill climb on a polygon of at most 2·[`CLIMB_BEFORE_SEARCH`] vertices or where `hint`
-    /// is already the support, else a binary search of the edge normals (counter-clockwise, so their angles from e₀ increase: vertex i
-    /// is the support of the directions in [eᵢ₋₁, eᵢ]) finished by a climb from its answer
-    /// (rounding of the angles). O(log n) for any m.
+    /// is already the support, else a binary search of the edge normals (counter-clockwise, so
+    /// their angles from e₀ increase: vertex i is the support of the directions in [eᵢ₋₁, eᵢ])
+    /// finished by a climb from its answer (rounding of the angles). O(log n) for any m.
     pub(crate) fn support_index_far(&self, m: Vector, hint: usize) -> usize {
         let n = self.verts.len();
         let i = if hint < n { hint } else { 0 };
