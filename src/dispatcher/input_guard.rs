@@ -187,9 +187,13 @@ pub(crate) fn finite<T: AllFinite>(r: Result<T, Unsupported>) -> Result<T, Unsup
 /// product of unit complex numbers, unit to rounding, when ω·t is finite (a start rotation
 /// [`pose_ok`] accepted). `false` says nothing: the caller computes the poses.
 fn poses_within_range(m: &NonlinearRigidMotion, t0: Real, t1: Real) -> bool {
-    let t = t0.abs().max(t1.abs());
-    let bound = m.start.translation.length() + 2.0 * m.local_center.length() + m.linvel.length() * t;
-    bound <= 0.5 * PARRY_MAX_COORDINATE && (m.angvel * t).is_finite()
+    position_bound(m, t0, t1) <= 0.5 * PARRY_MAX_COORDINATE && (m.angvel * t0.abs().max(t1.abs())).is_finite()
+}
+
+/// A bound on the coordinates of the origin of the body moving by `m` at the times `t0` and
+/// `t1` and between: |x₀| + 2|ℓ| + |v|·max(|t₀|, |t₁|) ([`poses_within_range`]).
+fn position_bound(m: &NonlinearRigidMotion, t0: Real, t1: Real) -> Real {
+    m.start.translation.length() + 2.0 * m.local_center.length() + m.linvel.length() * t0.abs().max(t1.abs())
 }
 
 /// The guards of a nonlinear cast handed to parry (`parry_cast_nonlinear`, and the composite
@@ -276,9 +280,7 @@ pub(crate) fn resolved_motions(
 ) -> Result<Option<(NonlinearRigidMotion, NonlinearRigidMotion)>, Unsupported> {
     let (b1, b2) = (g1.compute_local_bounding_sphere(), g2.compute_local_bounding_sphere());
     let size = b1.radius + b2.radius;
-    let t = t0.abs().max(t1.abs());
-    let far =
-        |m: &NonlinearRigidMotion| m.start.translation.length() + 2.0 * m.local_center.length() + m.linvel.length() * t;
+    let far = |m: &NonlinearRigidMotion| position_bound(m, t0, t1);
     let rounding = |a: &NonlinearRigidMotion, b: &NonlinearRigidMotion| far(a).max(far(b)) * Real::EPSILON;
     // A size that is not a number (a shape parry reads so) passes as before.
     let resolved =
