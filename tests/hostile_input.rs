@@ -22,9 +22,9 @@ use parry2d_f64::query::{
 };
 use parry2d_f64::shape::{Ball, Capsule, Compound, Cuboid, HalfSpace, Shape, SharedShape, Triangle};
 use smooth_ccd2d::{
-    shape_time_of_impact, time_of_impact, time_of_impact_halfspace, CapsuleEllipse, ConvexCurve, CurvePoint,
-    CustomCurve, Ellipse, QuadratureStatus, RoundedPolygon, ShapeError, SmoothDispatcher, SupportJet, ToiOptions,
-    ToiStatus, MAX_VERTICES,
+    shape_time_of_impact, stationary_distance, time_of_impact, time_of_impact_halfspace, CapsuleEllipse, ConvexCurve,
+    CurvePoint, CustomCurve, DistanceOptions, Ellipse, QuadratureStatus, RoundedPolygon, ShapeError, SmoothDispatcher,
+    SupportJet, ToiOptions, ToiStatus, MAX_VERTICES,
 };
 use std::collections::BTreeMap;
 use std::f64::consts::PI;
@@ -979,6 +979,60 @@ fn a_composite_cast_of_bodies_side_by_side_at_1e20_m_per_s_answers_at_once() {
 /// and the cast answered `Degenerate`, where the same motion on a time scale 2^−1000 slower
 /// answers `NoHit`. The half-space cast now asks such rates on a rescaled time, as
 /// `time_of_impact` does: the same answer on both scales.
+/// Adversarial fuzz seed 5014, case 44828: a `CapsuleEllipse` of r1 : r2 = 1 : 9.3e5 (the edge
+/// of the supported axis ratios) touching a 1 : 7,900 ellipse's flank with the end of its arc
+/// beside the segment, where its normal turns by about 1e-5 rad per unit in the last place of φ.
+/// The stationary distance ended there on two adjacent floats of φ with distanceSide at 5e-8
+/// and jittered between −3.4e-13 and +2.5e-16 over picoseconds of the motion (2e-8 of the size,
+/// 1e-12 promised); Newton's steps over the normal angle (`query::polish`) now give the exact
+/// contact query's distance and witnesses (an independent method: the minimum of the support
+/// functions over the normal angle) at every time, and the status of its sign.
+#[test]
+fn a_needle_arc_that_phi_cannot_resolve_gets_the_exact_stationary_distance() {
+    let a = CapsuleEllipse::new(1.1756974580030133e-11, 1.0970018038101628e-5, 8.246317336479094e-6);
+    let b = Ellipse::new(2.197602988639123e-9, 1.733767065333242e-5);
+    let m1 = NonlinearRigidMotion::new(
+        Pose::IDENTITY,
+        Vector::ZERO,
+        Vector::new(-4.8034450365496056e-8, 7.722378964231305e-6),
+        -53.2243525344351,
+    );
+    let m2 = NonlinearRigidMotion::new(
+        Pose::from_parts(
+            Vector::new(6.4870460886455655e-6, 3.7645466842405977e-5),
+            parry2d_f64::math::Rotation::from_cos_sin_unchecked(0.8219896066645191, -0.5695024903681363),
+        ),
+        Vector::ZERO,
+        Vector::new(4.964741239889841e-6, -5.7094652291015695e-6),
+        -32.796748176138856,
+    );
+    let size = a.bounding_radius().max(b.bounding_radius());
+    let d = SmoothDispatcher::default();
+    // The fuzz's hit time, and picoseconds around it: the pair moves by 1e-15 m a picosecond.
+    let hit = 0.9523974931482061;
+    let mut worst: f64 = 0.0;
+    for k in -10..=10 {
+        let t = hit + k as f64 * 1e-12;
+        let pos12 = m1.position_at_time(t).inv_mul(&m2.position_at_time(t));
+        let s = stationary_distance(&a, &b, &pos12, &DistanceOptions::default()).unwrap();
+        let c = d.contact(&pos12, &a, &b, 1.0).unwrap().unwrap();
+        let err = (s.distance - c.dist).abs();
+        worst = worst.max(err / size);
+        assert!(err <= 1e-12 * size, "t = {t}: {} against {}", s.distance, c.dist);
+        assert!((s.point1 - c.point1).length() <= 1e-12 * size, "t = {t}: point1");
+        assert!((s.point2 - c.point2).length() <= 1e-12 * size, "t = {t}: point2");
+        let apart = smooth_ccd2d::DistanceStatus::Separated;
+        assert_eq!(
+            s.status == apart,
+            s.distance > 0.0,
+            "t = {t}: {:?} at {}",
+            s.status,
+            s.distance
+        );
+    }
+    println!("needle arc: worst |stationary − exact contact| {worst:.1e} of the size over 21 times");
+}
+
 #[test]
 fn halfspace_cast_at_speeds_near_the_largest_float_answers_as_on_an_ordinary_time_scale() {
     let shape = CapsuleEllipse::new(1153.3140806495276, 247.99646258840284, 1625.8808178461309);

@@ -624,3 +624,85 @@ fn bodies_resting_in_the_floor_are_swept_by_their_translation_and_core() {
         }
     }
 }
+
+/// A user's curve spinning into a wall moves on as the crate's own shape does (found by a hunt
+/// through hostile rapier scenes): `CustomCurve::new(Ellipse::new(0.5, 0.2))` launched at
+/// (300, −50) m/s and spinning at 300–10⁴ rad/s onto a segment or a box sat 0.175 deep with its
+/// centre an eighth of its inradius off the wall for 109–113 of 120 steps, while
+/// `Ellipse::new(0.5, 0.2)` moved on: its manifold had no core contacts (the exact contact query
+/// does not read user curves), so the solver held nothing while the spin carried the contact
+/// points off the wall, and rapier's CCD stopped the translation at the start of every step.
+/// Now both bodies' cores come from the manifold's normal and deepest point
+/// (`core_disc::core_manifold_of`). Frozen: ten steps in a row at 1 m/s or more moving less than
+/// 0.1 % of |v|·dt (the CCD scene suite's judge).
+#[test]
+fn a_user_curve_spinning_into_a_wall_moves_on_as_the_shape_it_wraps() {
+    use smooth_ccd2d::CustomCurve;
+    let run = |custom: bool, ground: SharedShape, ground_y: f64, w: f64| -> (usize, f64) {
+        let mut world = World::new(NarrowPhase::with_query_dispatcher(SmoothDispatcher::default()));
+        world.params.normalized_max_linear_velocity = f64::MAX;
+        let g = world
+            .bodies
+            .insert(RigidBodyBuilder::fixed().translation(Vector::new(0.0, ground_y)));
+        world
+            .colliders
+            .insert_with_parent(ColliderBuilder::new(ground).build(), g, &mut world.bodies);
+        let shape = if custom {
+            SharedShape::new(CustomCurve::new(Ellipse::new(0.5, 0.2)))
+        } else {
+            SharedShape::new(Ellipse::new(0.5, 0.2))
+        };
+        let body = RigidBodyBuilder::dynamic()
+            .translation(Vector::new(0.0, 0.3))
+            .linvel(Vector::new(300.0, -50.0))
+            .angvel(w)
+            .ccd_enabled(true)
+            .allow_fast_rotation(true);
+        let h = world.bodies.insert(body);
+        world
+            .colliders
+            .insert_with_parent(ColliderBuilder::new(shape).build(), h, &mut world.bodies);
+        let (mut still, mut longest, mut lowest) = (0, 0, f64::INFINITY);
+        for _ in 0..120 {
+            let before = world.bodies[h].translation();
+            world.step(Vector::new(0.0, -9.81), &());
+            let rb = &world.bodies[h];
+            lowest = lowest.min(rb.translation().y);
+            let speed = rb.linvel().length();
+            if speed > 1.0 && (rb.translation() - before).length() < 1e-3 * speed * world.params.dt {
+                still += 1;
+                longest = longest.max(still);
+            } else {
+                still = 0;
+            }
+        }
+        (longest, lowest)
+    };
+    for (name, ground, ground_y) in [
+        (
+            "segment",
+            SharedShape::segment(Vector::new(-1e4, 0.0), Vector::new(1e4, 0.0)),
+            0.0,
+        ),
+        ("box", SharedShape::cuboid(1e4, 1.0), -1.0),
+    ] {
+        for w in [300.0, 1e3, 1e4] {
+            let (own, custom) = (
+                run(false, ground.clone(), ground_y, w),
+                run(true, ground.clone(), ground_y, w),
+            );
+            println!(
+                "{name}, {w} rad/s: Ellipse longest still {} steps, lowest {:.4}; CustomCurve {} steps, lowest {:.4}",
+                own.0, own.1, custom.0, custom.1
+            );
+            for (what, (longest, lowest)) in [("Ellipse", own), ("CustomCurve", custom)] {
+                assert!(
+                    longest < 10,
+                    "{what} on the {name} at {w} rad/s: still for {longest} steps"
+                );
+                // The top face of the wall at 0: the centre stays above it (its core never reaches it).
+                assert!(lowest > 0.0, "{what} on the {name} at {w} rad/s: centre at {lowest}");
+            }
+        }
+    }
+}

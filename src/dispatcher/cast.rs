@@ -6,7 +6,7 @@
 //! rules a disc turning about its centre against a polygon or a disc at rest is answered in
 //! closed form first (`disc_cast`: its centre's straight path against the grown target).
 
-use super::composite::composite_cast_nonlinear;
+use super::composite::{composite_cast_nonlinear, composite_casts_its_parts};
 use super::disc_cast::{disc_cast, polygon_point_distance, translating_cast};
 use super::input_guard;
 use super::parry_fallback::parry_nonlinear_without_stop;
@@ -283,8 +283,18 @@ impl SmoothDispatcher {
             Route::Curves { c1, c2, swapped } => self.cast_curves(c, &c1, &c2, swapped, &opts, rule),
             Route::Gap { c1, c2 } => self.cast_gap(c, &c1, &c2, &opts, rule),
             Route::HalfSpace { curve, hs, curve_first } => self.cast_halfspace(c, &curve, hs, curve_first, &opts, rule),
-            // parry's composite helper casts bounding balls itself: the same guards as parry's casts.
-            // Positions that rounding resolves (`input_guard::resolved_motions`), as for parry's.
+            // A composite at rest (rapier's CCD against level geometry): its parts cast by this
+            // dispatcher, under their own guards. Otherwise parry's composite helper casts
+            // bounding balls itself: the same guards as parry's casts, and positions that rounding
+            // resolves (`input_guard::resolved_motions`), as for parry's.
+            Route::Composite if composite_casts_its_parts(c.m1, c.g1, c.m2, c.g2) => {
+                match input_guard::cast_input_ok(c.m1, c.g1, c.m2, c.g2, c.t0, c.t1)? {
+                    true => input_guard::finite(composite_cast_nonlinear(
+                        self, c.m1, c.g1, c.m2, c.g2, c.t0, c.t1, c.stop,
+                    )),
+                    false => Ok(None),
+                }
+            }
             Route::Composite => match input_guard::cast_window_ok(c.m1, c.g1, c.m2, c.g2, c.t0, c.t1).and_then(|ok| {
                 if ok {
                     input_guard::resolved_motions(c.m1, c.g1, c.m2, c.g2, c.t0, c.t1)

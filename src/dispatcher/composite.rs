@@ -120,6 +120,30 @@ macro_rules! composite_helpers {
             }
         }
 
+        /// Whether [`composite_cast_nonlinear`] casts the parts of a composite itself, each by
+        /// the dispatcher (a heightfield against a convex shape; a convex shape against a
+        /// composite that does not move, rapier's CCD against level geometry), rather than
+        /// handing the pair to parry's composite helper.
+        #[allow(dead_code)]
+        pub(crate) fn composite_casts_its_parts(
+            m1: &NonlinearRigidMotion,
+            g1: &dyn Shape,
+            m2: &NonlinearRigidMotion,
+            g2: &dyn Shape,
+        ) -> bool {
+            let still = |m: &NonlinearRigidMotion| m.linvel == Vector::ZERO && m.angvel == 0.0;
+            use $parry::shape::TypedShape;
+            match (g1.as_typed_shape(), g2.as_typed_shape()) {
+                (TypedShape::HeightField(_), TypedShape::HeightField(_)) => false,
+                (_, TypedShape::HeightField(_)) | (TypedShape::HeightField(_), _) => true,
+                _ => match (g1.as_composite_shape(), g2.as_composite_shape()) {
+                    (None, Some(_)) => still(m2),
+                    (Some(_), None) => still(m1),
+                    _ => false,
+                },
+            }
+        }
+
         #[allow(clippy::too_many_arguments)]
         pub(crate) fn composite_cast_nonlinear(
             d: &$dispatcher,

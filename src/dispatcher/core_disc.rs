@@ -15,10 +15,11 @@
 //! Each radius is exact for the shapes the contact query reads (polygons, discs, ellipses and
 //! `CapsuleEllipse`s): the inradius about the centroid in closed form.
 
+use super::support_shape::{support_shape, SupportScratch};
 use crate::parry_shape::vertex_id;
 use crate::parry_shape::{capsule_ellipse_core, polygon_core, Core};
-use crate::query::contact::{Contact, SupportShape};
-use crate::RoundedPolygon;
+use crate::query::contact::{Contact, ContactPoint, Feature, SupportShape};
+use crate::{CustomCurve, RoundedPolygon};
 use parry2d_f64::math::{Pose, Vector};
 use parry2d_f64::query::{ContactManifold, TrackedContact};
 use parry2d_f64::shape::Shape;
@@ -197,6 +198,55 @@ pub(crate) fn core_of_shape(g: &dyn Shape, s: SupportShape) -> Option<Core> {
     }
 }
 
+/// The core of any shape the dispatcher reads: [`core_of_shape`] of a shape the contact query
+/// reads, a [`CustomCurve`]'s core computed when it was wrapped (its centroid and the distance
+/// from it to the curve), `None` otherwise.
+pub(crate) fn core_of_any(g: &dyn Shape) -> Option<Core> {
+    let mut scratch = SupportScratch::default();
+    match support_shape(g, &mut scratch) {
+        Some(s) => core_of_shape(g, s),
+        None => g.as_shape::<CustomCurve>().and_then(|c| c.core()).and_then(usable),
+    }
+}
+
+/// Fills `cores` with both bodies' core contacts ([`core_contacts`], [`core_manifold`]) of a
+/// pair whose manifold `main` does not come from the exact contact query (a user's
+/// [`CustomCurve`], a polygon of more than 16 vertices): from `main`'s normal and deepest point,
+/// each body's core by [`core_of_any`]. A spinning body whose contact points its spin carries
+/// off a wall while its centre drives in is then held by the solver as the crate's own shapes
+/// are (without them a user's curve spinning into a wall froze). `cores` is emptied when `main`
+/// has no point or no finite normal.
+pub(crate) fn core_manifold_of<M, C: Default + Copy>(
+    pos12: &Pose,
+    g1: &dyn Shape,
+    g2: &dyn Shape,
+    main: &ContactManifold<M, C>,
+    cores: &mut ContactManifold<M, C>,
+) {
+    let deepest = main.points.iter().min_by(|a, b| a.dist.total_cmp(&b.dist));
+    let (Some(p), true) = (deepest, main.local_n1.is_finite()) else {
+        cores.clear();
+        return;
+    };
+    let point = ContactPoint {
+        point1: p.local_p1,
+        point2: pos12 * p.local_p2,
+        feature1: Feature::Vertex(0),
+        feature2: Feature::Vertex(0),
+        dist: p.dist,
+    };
+    let c = Contact {
+        dist: p.dist,
+        normal: main.local_n1,
+        points: [point; 2],
+        len: 1,
+    };
+    let k = core_contacts([core_of_any(g1), core_of_any(g2)], pos12, &c);
+    if !core_manifold(pos12, &c, k, true, cores) {
+        cores.clear();
+    }
+}
+
 /// A core with a finite centre and a finite radius ≥ 0, else `None`.
 fn usable(core: Core) -> Option<Core> {
     (core.centre.is_finite() && core.radius.is_finite() && core.radius >= 0.0).then_some(core)
@@ -226,7 +276,6 @@ pub(crate) fn core_of(s: SupportShape) -> Option<Core> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::dispatcher::support_shape::{support_shape, SupportScratch};
     use crate::{CapsuleEllipse, Ellipse, RoundedPolygon};
     use parry2d_f64::shape::{Ball, Cuboid, Segment, Shape};
 
@@ -297,5 +346,47 @@ mod tests {
         let core = core_of(support_shape(&seg, &mut scratch).unwrap()).unwrap();
         assert_eq!(core.centre, Vector::new(1.0, 2.0));
         assert_eq!(core.radius, 0.0);
+    }
+
+    /// A user's curve wrapping one of the crate's shapes has that shape's core: the centroid
+    /// of its integrated mass and the projected distance to the curve, against the closed forms.
+    #[test]
+    fn a_user_curves_core_is_the_core_of_the_shape_it_wraps() {
+        /// A shape, and the same shape wrapped as a user's curve.
+        type Pair = (&'static str, Box<dyn Shape>, Box<dyn Shape>);
+        let shapes: [Pair; 3] = [
+            (
+                "ellipse",
+                Box::new(Ellipse::new(0.5, 0.2)),
+                Box::new(CustomCurve::new(Ellipse::new(0.5, 0.2))),
+            ),
+            (
+                "rounded heptagon",
+                Box::new(RoundedPolygon::regular(7, 1.0, 0.15)),
+                Box::new(CustomCurve::new(RoundedPolygon::regular(7, 1.0, 0.15))),
+            ),
+            (
+                "capsule-ellipse",
+                Box::new(CapsuleEllipse::new(0.3, 0.6, 0.8)),
+                Box::new(CustomCurve::new(CapsuleEllipse::new(0.3, 0.6, 0.8))),
+            ),
+        ];
+        for (name, own, custom) in &shapes {
+            let (a, b) = (core_of_any(&**own).unwrap(), core_of_any(&**custom).unwrap());
+            assert!(
+                (a.centre - b.centre).length() < 1e-9,
+                "{name}: {:?} vs {:?}",
+                a.centre,
+                b.centre
+            );
+            assert!(
+                (a.radius - b.radius).abs() < 1e-9,
+                "{name}: {} vs {}",
+                a.radius,
+                b.radius
+            );
+        }
+        // A shape the dispatcher does not read has none.
+        assert!(core_of_any(&parry2d_f64::shape::HalfSpace::new(Vector::Y)).is_none());
     }
 }

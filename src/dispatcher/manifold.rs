@@ -52,7 +52,9 @@
 //! over small facets).
 
 use super::composite::{composite_manifolds, is_composite_like};
-use super::core_disc::{core_contact, core_contacts, core_manifold, core_of_shape, CoreContact, CORE_FEATURE};
+use super::core_disc::{
+    core_contact, core_contacts, core_manifold, core_manifold_of, core_of_shape, CoreContact, CORE_FEATURE,
+};
 use super::input_guard;
 use super::parry_fallback::{pair_size, parry_within, pushed_together, TOUCH_PUSH};
 use super::parry_pairs;
@@ -443,8 +445,13 @@ where
         if self.exact_manifold(pos12, g1, g2, prediction, &mut main[0], Some(&mut cores[0])) {
             return Ok(());
         }
-        cores[0].clear();
-        self.contact_manifold_convex_convex(pos12, g1, g2, None, None, prediction, &mut main[0])
+        let answer = self.contact_manifold_convex_convex(pos12, g1, g2, None, None, prediction, &mut main[0]);
+        match answer {
+            // The bodies' core contacts from the manifold's normal and deepest point.
+            Ok(()) => core_manifold_of(pos12, g1, g2, &main[0], &mut cores[0]),
+            Err(_) => cores[0].clear(),
+        }
+        answer
     }
 
     fn contact_manifold_convex_convex(

@@ -1,5 +1,6 @@
 //! parry's traits for [`CustomCurve`], generically from the wrapped curve.
 
+use super::core::Core;
 use super::features::curve_feature;
 use super::mass::mass_from_moments;
 use super::projection::{project_on_curve, project_on_curve_with_feature};
@@ -70,18 +71,24 @@ impl Shape for CustomCurve {
 
     fn ccd_thickness(&self) -> Real {
         // The inradius about the centroid (module docs of `core`): the distance from the
-        // centroid to the curve, by projection (the box's half-width where that fails).
-        let c = self.mass_properties(1.0).local_com;
-        let p = self.project_local_point(c, false);
-        let d = (p.point - c).length();
-        if p.is_inside && d.is_finite() && d > 0.0 {
-            d
-        } else {
-            aabb_ccd_thickness(&self.compute_local_aabb())
+        // centroid to the curve, by projection, computed when the curve was wrapped
+        // ([`curve_core`]; the box's half-width where that fails).
+        match self.core() {
+            Some(core) => core.radius,
+            None => aabb_ccd_thickness(&self.compute_local_aabb()),
         }
     }
 
     fn ccd_angular_thickness(&self) -> Real {
         FRAC_PI_4
     }
+}
+
+/// The core of a wrapped curve: its centroid, and the distance from it to the curve by point
+/// projection; `None` where the centroid does not project inside at a finite positive distance.
+pub(crate) fn curve_core(c: &CustomCurve) -> Option<Core> {
+    let centre = c.mass_properties(1.0).local_com;
+    let p = c.project_local_point(centre, false);
+    let d = (p.point - centre).length();
+    (p.is_inside && d.is_finite() && d > 0.0 && centre.is_finite()).then_some(Core { centre, radius: d })
 }

@@ -72,6 +72,7 @@ mod ray;
 mod rounded_polygon;
 
 pub(crate) use core::{capsule_ellipse_core, polygon_core, Core};
+pub(crate) use custom_curve::curve_core;
 pub use features::FLAT_FEATURE_MAX_ANGLE;
 pub(crate) use features::{face_id, vertex_id};
 pub(crate) use mass::{curve_quadrature, Moments};

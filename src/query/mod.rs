@@ -10,6 +10,7 @@ pub(crate) mod gap;
 pub(crate) mod halfspace;
 pub(crate) mod pair;
 pub(crate) mod path;
+pub(crate) mod polish;
 pub(crate) mod solver;
 pub(crate) mod stationary;
 pub(crate) mod stepping;

@@ -69,6 +69,7 @@ use crate::numerics::angle::{ccw_angle, wrap_phi};
 use crate::numerics::math::{sin_cos, unit, Pose, Vector};
 use crate::numerics::motion::PairFrame;
 use crate::query::pair::PairPoint;
+use crate::query::polish::polish;
 use crate::query::solver::Solver;
 use core::f64::consts::PI;
 
@@ -523,7 +524,7 @@ fn finish<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized>(
     j: &PairPoint,
     status: DistanceStatus,
 ) -> StationaryDistance {
-    StationaryDistance {
+    let answer = StationaryDistance {
         distance: j.fwd,
         phi,
         point1: j.curve1.point,
@@ -533,6 +534,26 @@ fn finish<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized>(
         status,
         newton_iterations: sv.newton,
         evaluations: sv.evaluations,
+    };
+    // Where φ could not resolve the root (|S| above the side tolerance on a turning piece of
+    // object1), Newton's steps over the normal angle (`polish`).
+    match polish(sv.obj2, &sv.frame, phi, j, sv.side_tol) {
+        Some(p) => StationaryDistance {
+            distance: p.fwd,
+            // A penetration the polish shows apart is apart: F > 0 at a local maximum is the
+            // global one (the positive part of F is concave in the normal angle).
+            status: if p.fwd > 0.0 && status == DistanceStatus::Penetrating {
+                DistanceStatus::Separated
+            } else {
+                status
+            },
+            point1: p.point1,
+            point2: p.point2,
+            normal1: p.normal1,
+            normal2: -p.normal_in_2,
+            ..answer
+        },
+        None => answer,
     }
 }
 

@@ -20,7 +20,7 @@ use crate::curve::pieces::{flat_pieces, FlatPiece};
 use crate::curve::{ConvexCurve, CurvePoint, SupportJet};
 use crate::error::ShapeError;
 use crate::numerics::math::Vector;
-use crate::parry_shape::{curve_quadrature, MassQuadrature, Moments};
+use crate::parry_shape::{curve_quadrature, Core, MassQuadrature, Moments};
 use crate::shapes::curve_checks::{check_area, check_curvature, check_curve};
 use std::sync::Arc;
 
@@ -44,6 +44,9 @@ pub struct CustomCurve {
     /// Area, first moments and polar moment about the origin ([`crate::parry_shape`]).
     moments: Moments,
     quadrature: MassQuadrature,
+    /// The disc about the centroid inside the curve, its radius the distance from the centroid
+    /// to the curve (by point projection); `None` where that projection fails.
+    core: Option<Core>,
 }
 
 impl CustomCurve {
@@ -125,12 +128,22 @@ impl CustomCurve {
         check_area(moments[0], &checked)?;
         check_curvature(&*curve, &checked)?;
         let flats: Arc<[FlatPiece]> = flat_pieces(&*curve).into();
-        Ok(Self {
+        let mut shape = Self {
             curve,
             flats,
             moments,
             quadrature,
-        })
+            core: None,
+        };
+        shape.core = crate::parry_shape::curve_core(&shape);
+        Ok(shape)
+    }
+
+    /// The shape's core (its centroid and the distance from it to the curve), computed when it
+    /// was wrapped: the radius of its `ccd_thickness`, and the core contacts of its manifolds in
+    /// rapier ([`crate::SmoothDispatcher`]).
+    pub(crate) fn core(&self) -> Option<Core> {
+        self.core
     }
 
     /// The wrapped curve.
