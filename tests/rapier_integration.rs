@@ -633,7 +633,8 @@ fn bodies_resting_in_the_floor_are_swept_by_their_translation_and_core() {
 /// does not read user curves), so the solver held nothing while the spin carried the contact
 /// points off the wall, and rapier's CCD stopped the translation at the start of every step.
 /// Now both bodies' cores come from the manifold's normal and deepest point
-/// (`core_disc::core_manifold_of`). Frozen: ten steps in a row at 1 m/s or more moving less than
+/// (`core_disc::core_manifold_of`), and against a polyline's segments the smaller body's core
+/// contact joins each part's points (`core_disc::add_part_core`), as for the crate's shapes. Frozen: ten steps in a row at 1 m/s or more moving less than
 /// 0.1 % of |v|·dt (the CCD scene suite's judge).
 #[test]
 fn a_user_curve_spinning_into_a_wall_moves_on_as_the_shape_it_wraps() {
@@ -685,6 +686,19 @@ fn a_user_curve_spinning_into_a_wall_moves_on_as_the_shape_it_wraps() {
             0.0,
         ),
         ("box", SharedShape::cuboid(1e4, 1.0), -1.0),
+        (
+            "polyline",
+            SharedShape::polyline(
+                vec![
+                    Vector::new(-1e4, 0.0),
+                    Vector::new(-1.0, 0.0),
+                    Vector::new(1.0, 0.0),
+                    Vector::new(1e4, 0.0),
+                ],
+                None,
+            ),
+            0.0,
+        ),
     ] {
         for w in [300.0, 1e3, 1e4] {
             let (own, custom) = (

@@ -20,7 +20,7 @@ use crate::parry_shape::vertex_id;
 use crate::parry_shape::{capsule_ellipse_core, polygon_core, Core};
 use crate::query::contact::{Contact, ContactPoint, Feature, SupportShape};
 use crate::{CustomCurve, RoundedPolygon};
-use parry2d_f64::math::{Pose, Vector};
+use parry2d_f64::math::{Pose, Real, Vector};
 use parry2d_f64::query::{ContactManifold, TrackedContact};
 use parry2d_f64::shape::Shape;
 
@@ -209,6 +209,25 @@ pub(crate) fn core_of_any(g: &dyn Shape) -> Option<Core> {
     }
 }
 
+/// The contact a manifold stands for: its normal and its deepest point (body 1's frame); `None`
+/// when it has no point or no finite normal.
+fn contact_of<M, C: Default + Copy>(pos12: &Pose, main: &ContactManifold<M, C>) -> Option<Contact> {
+    let p = main.points.iter().min_by(|a, b| a.dist.total_cmp(&b.dist))?;
+    let point = ContactPoint {
+        point1: p.local_p1,
+        point2: pos12 * p.local_p2,
+        feature1: Feature::Vertex(0),
+        feature2: Feature::Vertex(0),
+        dist: p.dist,
+    };
+    main.local_n1.is_finite().then_some(Contact {
+        dist: p.dist,
+        normal: main.local_n1,
+        points: [point; 2],
+        len: 1,
+    })
+}
+
 /// Fills `cores` with both bodies' core contacts ([`core_contacts`], [`core_manifold`]) of a
 /// pair whose manifold `main` does not come from the exact contact query (a user's
 /// [`CustomCurve`], a polygon of more than 16 vertices): from `main`'s normal and deepest point,
@@ -223,27 +242,86 @@ pub(crate) fn core_manifold_of<M, C: Default + Copy>(
     main: &ContactManifold<M, C>,
     cores: &mut ContactManifold<M, C>,
 ) {
-    let deepest = main.points.iter().min_by(|a, b| a.dist.total_cmp(&b.dist));
-    let (Some(p), true) = (deepest, main.local_n1.is_finite()) else {
+    let Some(c) = contact_of(pos12, main) else {
         cores.clear();
         return;
-    };
-    let point = ContactPoint {
-        point1: p.local_p1,
-        point2: pos12 * p.local_p2,
-        feature1: Feature::Vertex(0),
-        feature2: Feature::Vertex(0),
-        dist: p.dist,
-    };
-    let c = Contact {
-        dist: p.dist,
-        normal: main.local_n1,
-        points: [point; 2],
-        len: 1,
     };
     let k = core_contacts([core_of_any(g1), core_of_any(g2)], pos12, &c);
     if !core_manifold(pos12, &c, k, true, cores) {
         cores.clear();
+    }
+}
+
+/// The core contact of the smaller body of a pair (by each shape's bounding circle's reach about
+/// its core's centre, as [`core_contact`] chooses) whose manifold does not come from the exact
+/// contact query, from its normal and deepest point, put into `manifold` as the exact path puts
+/// it for a part of a composite shape ([`insert_core_point`]): a user's curve against the
+/// segments of a polyline, the triangles of a mesh, the parts of a compound.
+pub(crate) fn add_part_core<M, C: Default + Copy>(
+    pos12: &Pose,
+    g1: &dyn Shape,
+    g2: &dyn Shape,
+    prediction: Real,
+    manifold: &mut ContactManifold<M, C>,
+) {
+    let Some(c) = contact_of(pos12, manifold) else {
+        return;
+    };
+    let cores = [core_of_any(g1), core_of_any(g2)];
+    let reach = |g: &dyn Shape, k: Option<Core>| {
+        let s = g.compute_local_bounding_sphere();
+        s.radius + (s.center - k.map_or(Vector::ZERO, |k| k.centre)).length()
+    };
+    let k = match core_contacts(cores, pos12, &c) {
+        [Some(a), Some(b)] => Some(if reach(g2, cores[1]) < reach(g1, cores[0]) {
+            b
+        } else {
+            a
+        }),
+        [a, b] => a.or(b),
+    };
+    if let Some(k) = k {
+        insert_core_point(pos12, c.normal, k, prediction, manifold);
+    }
+}
+
+/// Puts the core contact `k` of a pair with normal `n` (body 1's frame) into `manifold`, whose
+/// points are the pair's: beside a lone point; in place of the second of two unless the two
+/// straddle the core's centre along the tangent with the second within the prediction (a flat
+/// side resting on a part keeps both its ends). Nothing when the manifold has no point.
+pub(crate) fn insert_core_point<M, C: Default + Copy>(
+    pos12: &Pose,
+    n: Vector,
+    k: CoreContact,
+    prediction: Real,
+    manifold: &mut ContactManifold<M, C>,
+) {
+    if manifold.points.is_empty() {
+        return;
+    }
+    let core_point = TrackedContact::new(
+        k.point1,
+        pos12.inverse_transform_point(k.point2),
+        vertex_id(CORE_FEATURE),
+        vertex_id(CORE_FEATURE),
+        k.dist,
+    );
+    match manifold.points.len() {
+        1 => manifold.points.push(core_point),
+        _ => {
+            // The points on the core's body.
+            let on_body = |p: &TrackedContact<C>| {
+                if k.body == 0 {
+                    p.local_p1
+                } else {
+                    pos12 * p.local_p2
+                }
+            };
+            let pts = [on_body(&manifold.points[0]), on_body(&manifold.points[1])];
+            if !k.straddled_by(n, pts) || manifold.points[1].dist > prediction {
+                manifold.points[1] = core_point;
+            }
+        }
     }
 }
 

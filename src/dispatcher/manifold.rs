@@ -53,7 +53,8 @@
 
 use super::composite::{composite_manifolds, is_composite_like};
 use super::core_disc::{
-    core_contact, core_contacts, core_manifold, core_manifold_of, core_of_shape, CoreContact, CORE_FEATURE,
+    add_part_core, core_contact, core_contacts, core_manifold, core_manifold_of, core_of_shape, insert_core_point,
+    CoreContact,
 };
 use super::input_guard;
 use super::parry_fallback::{pair_size, parry_within, pushed_together, TOUCH_PUSH};
@@ -264,31 +265,8 @@ fn manifold_from_contact<M, C: Default + Copy>(
             ));
         }
     }
-    if let Some(k) = core.filter(|_| !manifold.points.is_empty()) {
-        let core_point = TrackedContact::new(
-            k.point1,
-            local2(k.point2),
-            vertex_id(CORE_FEATURE),
-            vertex_id(CORE_FEATURE),
-            k.dist,
-        );
-        match manifold.points.len() {
-            1 => manifold.points.push(core_point),
-            _ => {
-                // The points on the core's body.
-                let on_body = |p: &TrackedContact<C>| {
-                    if k.body == 0 {
-                        p.local_p1
-                    } else {
-                        pos12 * p.local_p2
-                    }
-                };
-                let pts = [on_body(&manifold.points[0]), on_body(&manifold.points[1])];
-                if !k.straddled_by(c.normal, pts) || manifold.points[1].dist > prediction {
-                    manifold.points[1] = core_point;
-                }
-            }
-        }
+    if let Some(k) = core {
+        insert_core_point(pos12, c.normal, k, prediction, manifold);
     }
     manifold.match_contacts(&old[..n_old]);
     true
@@ -445,7 +423,7 @@ where
         if self.exact_manifold(pos12, g1, g2, prediction, &mut main[0], Some(&mut cores[0])) {
             return Ok(());
         }
-        let answer = self.contact_manifold_convex_convex(pos12, g1, g2, None, None, prediction, &mut main[0]);
+        let answer = self.curve_manifold(pos12, g1, g2, None, None, prediction, &mut main[0]);
         match answer {
             // The bodies' core contacts from the manifold's normal and deepest point.
             Ok(()) => core_manifold_of(pos12, g1, g2, &main[0], &mut cores[0]),
@@ -468,6 +446,36 @@ where
         if unconstrained && self.exact_manifold(pos12, g1, g2, prediction, manifold, None) {
             return Ok(());
         }
+        let (old, n_old) = parry_pairs::previous_points(&manifold.points);
+        let (nc1, nc2) = (normal_constraints1, normal_constraints2);
+        self.curve_manifold(pos12, g1, g2, nc1, nc2, prediction, manifold)?;
+        // A part of a composite shape (parry's composite helpers call this method for each): the
+        // smaller body's core contact with the points, as the exact path gives it, its impulse
+        // kept from the previous points; parry's own pairs keep parry's manifold to the bit.
+        if own_curve(g1).is_some() || own_curve(g2).is_some() {
+            add_part_core(pos12, g1, g2, prediction, manifold);
+            manifold.match_contacts(&old[..n_old]);
+        }
+        Ok(())
+    }
+}
+
+impl SmoothDispatcher {
+    /// The manifold of a convex pair the exact contact query does not make (a user's curve, a
+    /// polygon of more than 16 vertices, a curve on a half-space, two of parry's shapes): one
+    /// point from the exact stationary distance where a side is strictly convex, parry's
+    /// clipped manifold otherwise (module docs).
+    #[allow(clippy::too_many_arguments)]
+    fn curve_manifold<M: Default + Clone + Send + Sync, C: Default + Copy + Send + Sync>(
+        &self,
+        pos12: &Pose,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+        normal_constraints1: Option<&dyn NormalConstraints>,
+        normal_constraints2: Option<&dyn NormalConstraints>,
+        prediction: Real,
+        manifold: &mut ContactManifold<M, C>,
+    ) -> Result<(), Unsupported> {
         let ours = own_curve(g1).is_some() || own_curve(g2).is_some();
         if ours && far_apart(pos12, g1, g2, prediction) {
             manifold.clear();
@@ -571,6 +579,7 @@ where
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::dispatcher::core_disc::CORE_FEATURE;
     use crate::{Ellipse, RoundedPolygon};
     use parry2d_f64::shape::{Compound, Cuboid, SharedShape};
 
