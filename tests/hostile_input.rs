@@ -1033,6 +1033,18 @@ fn a_needle_arc_that_phi_cannot_resolve_gets_the_exact_stationary_distance() {
     println!("needle arc: worst |stationary − exact contact| {worst:.1e} of the size over 21 times");
 }
 
+/// Adversarial fuzz seed 5042, case 29513 (`wild`): a parry `Ball` of radius 1e160 against a
+/// rounded hexagon at a pose whose rotation is not unit ((1e20, −0.36)). The pair's manifold
+/// came from the stationary distance, and its new core contacts (a user's curve's, a polygon's
+/// the exact contact query does not read) put a point at (−∞, −∞) in body 2's frame; such a
+/// point is now left out, and every query of the case keeps its promises.
+#[test]
+fn a_core_contact_that_leaves_f64_in_the_other_bodys_frame_is_left_out() {
+    let case = reliability::generate(5042, 29513);
+    let out = within("seed 5042, case 29513", move || reliability::run_case(&case));
+    assert!(out.violations.is_empty(), "{:?}", out.violations);
+}
+
 #[test]
 fn halfspace_cast_at_speeds_near_the_largest_float_answers_as_on_an_ordinary_time_scale() {
     let shape = CapsuleEllipse::new(1153.3140806495276, 247.99646258840284, 1625.8808178461309);

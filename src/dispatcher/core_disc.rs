@@ -156,7 +156,11 @@ pub(crate) fn core_manifold<M, C: Default + Copy>(
             if let Some(k) = k {
                 let id = vertex_id(code);
                 let p2 = pos12.inverse_transform_point(k.point2);
-                manifold.points.push(TrackedContact::new(k.point1, p2, id, id, k.dist));
+                // A point that leaves f64 in body 2's frame (absurd input: a pose whose rotation
+                // is not unit, a shape of 1e160) is left out rather than handed on.
+                if p2.is_finite() {
+                    manifold.points.push(TrackedContact::new(k.point1, p2, id, id, k.dist));
+                }
             }
         }
     }
@@ -288,7 +292,8 @@ pub(crate) fn add_part_core<M, C: Default + Copy>(
 /// Puts the core contact `k` of a pair with normal `n` (body 1's frame) into `manifold`, whose
 /// points are the pair's: beside a lone point; in place of the second of two unless the two
 /// straddle the core's centre along the tangent with the second within the prediction (a flat
-/// side resting on a part keeps both its ends). Nothing when the manifold has no point.
+/// side resting on a part keeps both its ends). Nothing when the manifold has no point or the
+/// core's point is not finite in body 2's frame.
 pub(crate) fn insert_core_point<M, C: Default + Copy>(
     pos12: &Pose,
     n: Vector,
@@ -296,16 +301,12 @@ pub(crate) fn insert_core_point<M, C: Default + Copy>(
     prediction: Real,
     manifold: &mut ContactManifold<M, C>,
 ) {
-    if manifold.points.is_empty() {
+    let p2 = pos12.inverse_transform_point(k.point2);
+    // Nothing to add to no point, nor a point that leaves f64 in body 2's frame.
+    if manifold.points.is_empty() || !p2.is_finite() {
         return;
     }
-    let core_point = TrackedContact::new(
-        k.point1,
-        pos12.inverse_transform_point(k.point2),
-        vertex_id(CORE_FEATURE),
-        vertex_id(CORE_FEATURE),
-        k.dist,
-    );
+    let core_point = TrackedContact::new(k.point1, p2, vertex_id(CORE_FEATURE), vertex_id(CORE_FEATURE), k.dist);
     match manifold.points.len() {
         1 => manifold.points.push(core_point),
         _ => {
