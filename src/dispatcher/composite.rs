@@ -191,10 +191,14 @@ macro_rules! composite_helpers {
         /// The nonlinear cast of the convex `body` moving by `mb` against the composite `comp` at
         /// rest at `mc`'s pose, the pair in the caller's order (`comp` first when
         /// `comp_first`). The earliest hit over the composite's parts, each part cast by `d`;
-        /// the BVH is walked from the earliest time the body's bounding circle about its
-        /// rotation centre — which its spin does not move — can reach a node's box (the ray of
-        /// the centre against the box grown by the circle's radius, a lower bound on any hit
-        /// of a part inside it), so parts the body cannot reach are never cast.
+        /// the BVH is walked from the earliest time the body can reach a node's box (the ray of
+        /// its rotation centre against the box grown by the body's extent about that centre, a
+        /// lower bound on any hit of a part inside it), so parts the body cannot reach are
+        /// never cast. The extent ([`swept_extent`]): the bounding circle about the rotation
+        /// centre, which the spin does not move; where the body turns by less than half a turn
+        /// over the window, within it its boxes at both ends grown by what the turn can move a
+        /// point (R·Δ/2, R the circle's radius, Δ the turn) — a body sliding over a long
+        /// polyline without touching it casts none of the segments under its path.
         #[allow(clippy::too_many_arguments)]
         fn cast_against_still_composite(
             d: &$dispatcher,
@@ -211,11 +215,19 @@ macro_rules! composite_helpers {
             // The body's rotation centre in the composite's frame: c(t) = c0 + v·t.
             let c0 = pose.inverse_transform_point(mb.start * mb.local_center);
             let v = pose.rotation.inverse() * mb.linvel;
-            let sphere = body.compute_local_bounding_sphere();
-            let reach = sphere.radius + (sphere.center - mb.local_center).length();
-            // The first time in [t0, t1] at which c(t) enters the box grown by `reach`.
+            let (lo_ext, hi_ext, reach) = swept_extent(mb, body, &pose, t0, t1);
+            // The first time in [t0, t1] at which c(t) enters the box grown by the extent and
+            // by the start-contact gap of rapier's rule (a part that close at the start is in
+            // contact there) with a margin for rounding.
+            let scale = c0.abs().max_element() + v.abs().max_element() * (t1 - t0).abs() + reach;
             let entry = |mins: Vector, maxs: Vector| -> Real {
-                let (lo, hi) = (mins - Vector::splat(reach), maxs + Vector::splat(reach));
+                let size = reach + 0.5 * (maxs - mins).length();
+                let far = scale + mins.abs().max(maxs.abs()).max_element();
+                let margin = ($crate::CastPolicy::START_CONTACT_GAP as Real) * size + 16.0 * Real::EPSILON * far;
+                let (lo, hi) = (
+                    mins - hi_ext - Vector::splat(margin),
+                    maxs - lo_ext + Vector::splat(margin),
+                );
                 let (mut a, mut b) = (t0, t1);
                 for k in 0..2 {
                     let (p, s) = (c0[k], v[k]);
@@ -273,11 +285,51 @@ macro_rules! composite_helpers {
             comp.bvh().find_best(Real::MAX, cost, leaf).map(|(_, hit)| hit)
         }
 
+        /// The box about its rotation centre c(t) that holds the convex `body` moving by `mb` at
+        /// every time of [t0, t1], in the frame of `pose` (`lo`, `hi`: its corners less c(t)),
+        /// and the radius R of the body's bounding circle about c. Always within the circle's
+        /// box [−R, R]²; where the body turns by Δ = |ω|·(t1 − t0) < π — on parry's constant
+        /// spin and on rapier's nlerp path alike, which then turn the same way between the same
+        /// end poses, each monotonically —, within the hull of its boxes at t0 and t1 grown by
+        /// R·Δ/2: at any time the body is within Δ/2 of one end's rotation, and a point at
+        /// distance ρ ≤ R from c moves by at most ρ·α turning by α. Non-finite boxes fall back
+        /// to the circle's.
+        fn swept_extent(
+            mb: &NonlinearRigidMotion,
+            body: &dyn Shape,
+            pose: &Pose,
+            t0: Real,
+            t1: Real,
+        ) -> (Vector, Vector, Real) {
+            let sphere = body.compute_local_bounding_sphere();
+            let reach = sphere.radius + (sphere.center - mb.local_center).length();
+            let circle = (Vector::splat(-reach), Vector::splat(reach), reach);
+            let turn = mb.angvel.abs() * (t1 - t0).abs();
+            if turn.is_nan() || turn >= core::f64::consts::PI as Real || !reach.is_finite() {
+                return circle;
+            }
+            let grow = Vector::splat(0.5 * reach * turn);
+            let at = |t: Real| {
+                let p = pose.inv_mul(&mb.position_at_time(t));
+                let aabb = body.compute_aabb(&p);
+                let c = p * mb.local_center;
+                (aabb.mins - c, aabb.maxs - c)
+            };
+            let ((lo0, hi0), (lo1, hi1)) = (at(t0), at(t1));
+            let lo = (lo0.min(lo1) - grow).max(circle.0);
+            let hi = (hi0.max(hi1) + grow).min(circle.1);
+            if lo.is_finite() && hi.is_finite() {
+                (lo, hi, reach)
+            } else {
+                circle
+            }
+        }
+
         /// The nonlinear cast of the convex `body` moving by `mb` against the heightfield `hf`
         /// moving by `mh`, in the caller's order (`hf` first when `hf_first`): the earliest hit
         /// over its segments, each cast by `d`. At rest (rapier's CCD), only the segments under
-        /// the box the body's bounding circle about its rotation centre sweeps (its centre's
-        /// straight path, grown by the circle's radius, in the heightfield's frame); moving, all.
+        /// the box the body sweeps (its centre's straight path grown by [`swept_extent`], in the
+        /// heightfield's frame); moving, all.
         #[allow(clippy::too_many_arguments)]
         fn cast_against_heightfield(
             d: &$dispatcher,
@@ -315,11 +367,19 @@ macro_rules! composite_helpers {
             if mh.linvel == Vector::ZERO && mh.angvel == 0.0 {
                 let pose = mh.start;
                 let centre = |t: Real| pose.inverse_transform_point(mb.start * mb.local_center + mb.linvel * t);
-                let sphere = body.compute_local_bounding_sphere();
-                let reach = sphere.radius + (sphere.center - mb.local_center).length();
+                let (lo, hi, reach) = swept_extent(mb, body, &pose, t0, t1);
                 let (a, b) = (centre(t0), centre(t1));
-                let grow = Vector::splat(reach);
-                let aabb = $parry::bounding_volume::Aabb::new(a.min(b) - grow, a.max(b) + grow);
+                // The start-contact gap of rapier's rule (of the pair's size, at most the body's
+                // circle and the whole heightfield) and a margin for rounding.
+                let whole = hf.local_aabb();
+                let far =
+                    a.abs().max(b.abs()).max_element() + reach + whole.mins.abs().max(whole.maxs.abs()).max_element();
+                let margin = Vector::splat(
+                    ($crate::CastPolicy::START_CONTACT_GAP as Real)
+                        * (reach + 0.5 * (whole.maxs - whole.mins).length())
+                        + 16.0 * Real::EPSILON * far,
+                );
+                let aabb = $parry::bounding_volume::Aabb::new(a.min(b) + lo - margin, a.max(b) + hi + margin);
                 if aabb.mins.is_finite() && aabb.maxs.is_finite() {
                     hf.map_elements_in_local_aabb(&aabb, &mut each);
                     return best;
