@@ -431,3 +431,73 @@ fn our_shape_against_a_shape_the_core_refuses_is_guarded() {
     let dist = d.distance(&pos, &plane, &e).expect("distance").distance;
     assert!((dist - 0.8).abs() < 1e-6, "{dist}");
 }
+
+/// A cast against a composite at rest (rapier's CCD against level geometry), which the f32
+/// dispatcher answers part by part with the f64 dispatcher's culling (the shared composite
+/// helpers, computed in f32 here): the earliest hit over every part cast on its own, to the bit.
+#[test]
+fn a_cast_against_a_composite_at_rest_is_the_earliest_hit_over_every_part_in_f32() {
+    use parry2d::query::NonlinearRigidMotion;
+    use parry2d::shape::{Polyline, Segment};
+    let d = SmoothDispatcher::default();
+    let mut rng = common::rng::Rng::new(0xF32C_0A57);
+    let dt = 1.0 / 60.0;
+    let bodies: Vec<Box<dyn Shape>> = vec![
+        Box::new(Ellipse::new(0.5, 0.2)),
+        Box::new(Ellipse::new(0.3, 0.3)),
+        Box::new(RoundedPolygon::regular(6, 0.4, 0.05)),
+        Box::new(CapsuleEllipse::new(0.2, 0.3, 0.4)),
+    ];
+    let (mut cases, mut hits) = (0usize, 0usize);
+    for _ in 0..1000 {
+        let n = rng.int(8, 40);
+        let points: Vec<Vector> = (0..=n)
+            .map(|i| Vector::new(-10.0 + 20.0 * i as f32 / n as f32, rng.uniform(-0.3, 0.3) as f32))
+            .collect();
+        let ground = Polyline::new(points.clone(), None);
+        let pose = Pose::new(
+            Vector::new(rng.uniform(-1.0, 1.0) as f32, rng.uniform(-1.0, 1.0) as f32),
+            rng.uniform(-0.3, 0.3) as f32,
+        );
+        for body in &bodies {
+            let start = pose
+                * Pose::new(
+                    Vector::new(rng.uniform(-9.0, 9.0) as f32, rng.uniform(0.0, 1.2) as f32),
+                    rng.angle() as f32,
+                );
+            let dir = Vector::new(rng.uniform(-1.0, 1.0) as f32, rng.uniform(-1.0, 0.3) as f32).normalize();
+            // None, within a step's quarter turn, up to about half a turn, far beyond.
+            let spin = match rng.int(0, 3) {
+                0 => 0.0,
+                1 => rng.uniform(0.0, 3.0),
+                2 => rng.uniform(3.0, 180.0),
+                _ => 1e4,
+            } as f32
+                * rng.sign() as f32;
+            let mb = NonlinearRigidMotion::new(start, Vector::ZERO, dir * rng.log_uniform(1.0, 3000.0) as f32, spin);
+            let mc = NonlinearRigidMotion::constant_position(pose);
+            let got = d
+                .cast_shapes_nonlinear(&mb, body.as_ref(), &mc, &ground, 0.0, dt, false)
+                .expect("a composite at rest is supported")
+                .map(|h| h.time_of_impact);
+            let mut want: Option<f32> = None;
+            for w in points.windows(2) {
+                let part = Segment::new(w[0], w[1]);
+                if let Ok(Some(h)) = d.cast_shapes_nonlinear(&mb, body.as_ref(), &mc, &part, 0.0, dt, false) {
+                    if want.is_none_or(|b| h.time_of_impact < b) {
+                        want = Some(h.time_of_impact);
+                    }
+                }
+            }
+            assert_eq!(
+                got.map(f32::to_bits),
+                want.map(f32::to_bits),
+                "{:?} ({mb:?}): {got:?} vs {want:?}",
+                body.shape_type()
+            );
+            cases += 1;
+            hits += usize::from(got.is_some());
+        }
+    }
+    println!("{cases} f32 composite casts ({hits} hits)");
+}
