@@ -209,22 +209,24 @@ fn a_body_sliding_over_a_long_polyline_without_touching_it_casts_none_of_its_seg
     );
     let y = -curve.compute_local_aabb().mins.y + 1e-4;
     let still = NonlinearRigidMotion::identity();
-    let slide = NonlinearRigidMotion::new(Pose::translation(-40.0, y), Vector::ZERO, Vector::new(3000.0, 0.0), 0.0);
-    evals.store(0, Ordering::Relaxed);
-    let hit = d
-        .cast_shapes_nonlinear(&slide, &curve, &still, &ground, 0.0, DT, false)
-        .unwrap();
-    let sliding = evals.load(Ordering::Relaxed);
+    // The evaluations of one cast of the curve from (x, y) at (v, 0) against `target`, and its hit.
+    let cast = |x: f64, v: f64, target: &dyn Shape| {
+        let motion = NonlinearRigidMotion::new(Pose::translation(x, y), Vector::ZERO, Vector::new(v, 0.0), 0.0);
+        evals.store(0, Ordering::Relaxed);
+        let hit = d
+            .cast_shapes_nonlinear(&motion, &curve, &still, target, 0.0, DT, false)
+            .unwrap();
+        (evals.load(Ordering::Relaxed), hit)
+    };
+    let (sliding, hit) = cast(-40.0, 3000.0, &ground);
     assert!(hit.is_none(), "{hit:?}");
     // One segment's cast takes hundreds of evaluations; the swept box's two ends take a few
     // support points.
-    let one = Segment::new(Vector::new(-0.005, 0.0), Vector::new(0.005, 0.0));
-    let over = NonlinearRigidMotion::new(Pose::translation(-0.3, y), Vector::ZERO, Vector::new(36.0, 0.0), 0.0);
-    evals.store(0, Ordering::Relaxed);
-    let _ = d
-        .cast_shapes_nonlinear(&over, &curve, &still, &one, 0.0, DT, false)
-        .unwrap();
-    let single = evals.load(Ordering::Relaxed);
+    let (single, _) = cast(
+        -0.3,
+        36.0,
+        &Segment::new(Vector::new(-0.005, 0.0), Vector::new(0.005, 0.0)),
+    );
     println!("evaluations: sliding over {n} segments {sliding}, over one segment {single}");
     assert!(
         sliding < single,
