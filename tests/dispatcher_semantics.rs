@@ -74,7 +74,9 @@ fn linear_cast_of_an_ellipse_along_its_axis_hits_at_the_closed_form_time() {
 /// other, passing by or stopping short, with a target distance of 0 or 1 % of the size — a hit
 /// is at the target distance (the exact distance of the dispatcher, to 1e-12 of the size below,
 /// the tracker's tolerance above) and above it at 4,000 times before; a miss stays above it at
-/// 4,000 times over the window.
+/// 4,000 times over the window. A hit is the same with parry's default window, `Real::MAX` (where
+/// the gap tracker answered `OutOfIterations` at 0 before the window was bounded by the shapes'
+/// bounding circles).
 #[test]
 fn linear_cast_of_a_pair_with_no_strictly_convex_side_is_exact() {
     let mut rng = rng::Rng::new(0x11_4EA2);
@@ -145,6 +147,15 @@ fn linear_cast_of_a_pair_with_no_strictly_convex_side_is_exact() {
             dispatcher.distance(&p, &*g1, &*g2).unwrap().distance
         };
         let ours = d.cast_shapes(&pos12, vel12, &*g1, &*g2, options).unwrap();
+        // parry's default window, `Real::MAX`, gives the same answer.
+        let unbounded = ShapeCastOptions {
+            max_time_of_impact: f64::MAX,
+            ..options
+        };
+        let whole = d.cast_shapes(&pos12, vel12, &*g1, &*g2, unbounded).unwrap();
+        if let Some(h) = ours {
+            assert_eq!(whole.map(|w| w.time_of_impact), Some(h.time_of_impact), "case {case}");
+        }
         if gap_at(&d, 0.0) <= delta {
             // Within the target at the start (a long segment or a large box reaching shape 1):
             // parry's rule, a hit at 0 when approaching, none when leaving.

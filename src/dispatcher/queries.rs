@@ -10,6 +10,7 @@ use super::parry_fallback::parry_contact;
 use super::route::{curves_toi, own_curve, route, CurveOf, Route, RouteScratch};
 use super::support_shape::exact_contact;
 use super::SmoothDispatcher;
+use crate::curve::ConvexCurve;
 use crate::numerics::math::{Pose, Real, Vector};
 use crate::query::gap::{gap_distance, gap_time_of_impact};
 use crate::query::toi::{bounding_circles_part, ToiOptions};
@@ -34,6 +35,16 @@ fn gap_pair_distance(c1: &CurveOf, c2: &CurveOf, pos12: &Pose) -> Option<GapDist
     let (d, p1, p2, n1) = gap_distance(a, b, pos12)?;
     let n2 = pos12.rotation.inverse() * -n1;
     (d.is_finite() && p1.is_finite() && p2.is_finite() && n2.is_finite()).then_some((d, p1, p2, n1, n2))
+}
+
+/// A time after which two shapes, shape 2 translating from `pos12` at `vel12` in shape 1's
+/// frame, are never within `delta` of each other: twice the time for the centres' distance to
+/// grow past |pos12| plus both bounding radii and δ (at that time it is at least |vel12|·t − |pos12|).
+/// `None` when it is not a finite positive number (no motion, or one too slow to measure).
+fn linear_horizon(a: &dyn ConvexCurve, b: &dyn ConvexCurve, pos12: &Pose, vel12: Vector, delta: Real) -> Option<Real> {
+    let reach = pos12.translation.length() + a.bounding_radius() + b.bounding_radius() + delta.max(0.0);
+    let h = 2.0 * reach / vel12.length();
+    (h.is_finite() && h > 0.0).then_some(h)
 }
 
 impl QueryDispatcher for SmoothDispatcher {
@@ -229,6 +240,9 @@ impl QueryDispatcher for SmoothDispatcher {
                     if bounding_circles_part(c1.get(), &m1, c2.get(), &m2, 0.0, t1, delta) {
                         return Ok(None);
                     }
+                    // parry's default window is `Real::MAX`, which the gap tracker cannot step
+                    // through: the window ends where the bounding circles are past each other.
+                    let t1 = linear_horizon(c1.get(), c2.get(), pos12, local_vel12, delta).map_or(t1, |h| t1.min(h));
                     toi_to_parry(gap_time_of_impact(p1, &m1, p2, &m2, 0.0, t1, &opts).map(Some))
                 }
                 _ => input_guard::parry(pos12, g1, g2, 0.0, || {
