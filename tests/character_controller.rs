@@ -109,7 +109,7 @@ fn walk(w: &World, ctl: &KinematicCharacterController, shape: &dyn Shape, half_h
         let mv = ctl.move_shape(DT, &q, shape, &pos, Vector::new(SPEED * DT, vy * DT), |c| hits.push(c));
         // Every cast the controller made that came back converged: the character, at the pose
         // the controller moved it to, is the cast's target distance (the controller's offset)
-        // from what it hit, exactly (the exact distance of `SmoothDispatcher`, to 1e-9 m).
+        // from what it hit, exactly (the exact distance of `SmoothDispatcher`, to 1e-12 m).
         for c in hits.iter().filter(|c| c.hit.status == ShapeCastStatus::Converged) {
             let other = &w.colliders[c.handle];
             let pos12 = c.character_pos.inv_mul(other.position());
@@ -118,18 +118,6 @@ fn walk(w: &World, ctl: &KinematicCharacterController, shape: &dyn Shape, half_h
                 .expect("a distance")
                 .distance;
             worst_gap_error = worst_gap_error.max((d - offset(half_height)).abs());
-            if (d - offset(half_height)).abs() > 1e-9 && std::env::var("DBG").is_ok() {
-                eprintln!(
-                    "DBG d-off {:e} toi {:e} applied {:?} remaining {:?} pos {:?} n1 {:?} other {:?}",
-                    d - offset(half_height),
-                    c.hit.time_of_impact,
-                    c.translation_applied,
-                    c.translation_remaining,
-                    c.character_pos,
-                    c.hit.normal1,
-                    other.shape().shape_type()
-                );
-            }
             converged_hits += 1;
         }
         if mv.grounded {
@@ -206,7 +194,7 @@ fn a_character_of_this_crates_shapes_walks_on_the_ground_and_stops_at_a_wall_at_
             );
             assert!(end.finite, "{name}, {wall_name}: a position was not finite");
             assert!(
-                end.converged_hits > 0 && end.worst_gap_error < 1e-9,
+                end.converged_hits > 0 && end.worst_gap_error < 1e-12,
                 "{name}, {wall_name}: {} hits, gap off by {:e}",
                 end.converged_hits,
                 end.worst_gap_error
@@ -275,7 +263,7 @@ fn a_character_of_this_crates_shapes_walks_on_flat_ground_and_climbs_a_step_as_f
             );
             assert!(end.finite, "{name}: a position was not finite");
             assert!(
-                end.converged_hits > 0 && end.worst_gap_error < 1e-9,
+                end.converged_hits > 0 && end.worst_gap_error < 1e-12,
                 "{name}: {} hits, gap off by {:e}",
                 end.converged_hits,
                 end.worst_gap_error

@@ -47,6 +47,15 @@ fn linear_horizon(a: &dyn ConvexCurve, b: &dyn ConvexCurve, pos12: &Pose, vel12:
     (h.is_finite() && h > 0.0).then_some(h)
 }
 
+/// The window's end `t1` cut at the horizon `h` when there is one; a NaN end stays NaN (the
+/// tracker refuses it, as it refuses any non-finite input).
+fn bounded(t1: Real, h: Option<Real>) -> Real {
+    match h {
+        Some(h) if !t1.is_nan() => t1.min(h),
+        _ => t1,
+    }
+}
+
 impl QueryDispatcher for SmoothDispatcher {
     fn intersection_test(
         &self,
@@ -224,6 +233,13 @@ impl QueryDispatcher for SmoothDispatcher {
             Route::Curves { c1, c2, swapped } => {
                 // time_of_impact takes the shapes in the caller's order (it swaps roles itself).
                 let (a, b) = if swapped { (&c2, &c1) } else { (&c1, &c2) };
+                // An infinite window (parry takes one) ends where the bounding circles are past
+                // each other; a finite one is the caller's.
+                let t1 = if t1 == Real::INFINITY {
+                    bounded(t1, linear_horizon(a.get(), b.get(), pos12, local_vel12, delta))
+                } else {
+                    t1
+                };
                 if bounding_circles_part(a.get(), &m1, b.get(), &m2, 0.0, t1, delta) {
                     return Ok(None);
                 }
@@ -242,7 +258,7 @@ impl QueryDispatcher for SmoothDispatcher {
                     }
                     // parry's default window is `Real::MAX`, which the gap tracker cannot step
                     // through: the window ends where the bounding circles are past each other.
-                    let t1 = linear_horizon(c1.get(), c2.get(), pos12, local_vel12, delta).map_or(t1, |h| t1.min(h));
+                    let t1 = bounded(t1, linear_horizon(c1.get(), c2.get(), pos12, local_vel12, delta));
                     toi_to_parry(gap_time_of_impact(p1, &m1, p2, &m2, 0.0, t1, &opts).map(Some))
                 }
                 _ => input_guard::parry(pos12, g1, g2, 0.0, || {

@@ -578,12 +578,24 @@ mod tests {
         assert_eq!(c.get().support_point(-Vector::X), Vector::ZERO);
         // Three coinciding vertices are no shape.
         assert!(curve_of(&Triangle::new(Vector::X, Vector::X, Vector::X), &mut None).is_none());
-        // A triangle 1e7 from the origin is a triangle.
+        // A triangle 1e7 from the origin is a triangle, in either order, rounded or not.
         let far = Vector::new(1e7, -1e7);
-        let t = Triangle::new(far, far + Vector::new(1.0, 0.0), far + Vector::new(0.0, 1.0));
-        let mut slot = None;
-        let c = curve_of(&t, &mut slot).expect("a triangle");
-        assert_eq!(c.get().support_point(Vector::new(-1.0, -1.0)), far);
+        let (x, y) = (far + Vector::new(1.0, 0.0), far + Vector::new(0.0, 1.0));
+        for t in [Triangle::new(far, x, y), Triangle::new(far, y, x)] {
+            let mut slot = None;
+            let c = curve_of(&t, &mut slot).expect("a triangle");
+            assert_eq!(c.get().support_point(Vector::new(-1.0, -1.0)), far);
+            assert_eq!(c.get().support_point(Vector::new(1.0, -0.1)), x);
+            assert_eq!(c.get().support_point(Vector::new(-0.1, 1.0)), y);
+            let round = RoundTriangle {
+                inner_shape: t,
+                border_radius: 0.25,
+            };
+            let mut slot = None;
+            let c = curve_of(&round, &mut slot).expect("a rounded triangle");
+            let p = c.get().support_point(Vector::new(0.0, -1.0));
+            assert!((p.y - (far.y - 0.25)).abs() < 1e-6, "{p:?}");
+        }
         // The triangle's curve is counter-clockwise: the support along +x is the vertex (1, 0).
         let t = Triangle::new(Vector::ZERO, Vector::new(0.0, 1.0), Vector::new(1.0, 0.0));
         let mut slot = None;
