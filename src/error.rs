@@ -232,7 +232,10 @@ impl fmt::Display for QueryError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(match self {
             QueryError::NonFinite => "a pose, motion, time or option is not finite",
-            QueryError::NotStrictlyConvex => "object2 must be strictly convex",
+            QueryError::NotStrictlyConvex => {
+                "neither shape is strictly convex (for stationary_distance: object2 is not); \
+                 shape_time_of_impact takes two flat-sided shapes"
+            }
             QueryError::Degenerate => "a shape evaluated to a non-finite value",
             QueryError::EmptyWindow => "the time window is reversed",
             QueryError::UnsupportedShape => "a shape the query cannot take",

@@ -15,7 +15,9 @@ use parry2d_f64::math::{Pose, Vector};
 use parry2d_f64::query::{NonlinearRigidMotion, QueryDispatcher};
 use parry2d_f64::shape::{Compound, HeightField, Polyline, Segment, Shape, SharedShape};
 use rng::Rng;
-use smooth_ccd2d::{CapsuleEllipse, ConvexCurve, CurvePoint, CustomCurve, Ellipse, RoundedPolygon, SmoothDispatcher};
+use smooth_ccd2d::{
+    CapsuleEllipse, ConvexCurve, CurvePoint, CustomCurve, Ellipse, RoundedPolygon, SmoothDispatcher, ToiOptions,
+};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Arc;
 
@@ -232,4 +234,158 @@ fn a_body_sliding_over_a_long_polyline_without_touching_it_casts_none_of_its_seg
         sliding < single,
         "{sliding} evaluations over {n} segments, {single} over one"
     );
+}
+
+/// A flat heightfield turned upside down (a negative vertical scale: the one heightfield with a
+/// negative scale whose bounding box is not inverted, so the dispatcher's guards take it) was
+/// culled wrongly: the cast against it culled its segments with parry's
+/// `map_elements_in_local_aabb`, which compares the box divided by the scale with the unscaled
+/// heights, and a negative scale turns that comparison around — every segment under the
+/// body's swept box was skipped and a body falling onto the ground went through it (found by a
+/// hostile-input hunt over heightfields of extreme and negative scales: 45 of 500 casts missed).
+/// The segments are now culled by their own boxes, whatever the scale's sign: the answer is the
+/// earliest hit over every segment, and the falls hit.
+#[test]
+fn a_cast_against_a_flat_heightfield_of_negative_vertical_scale_is_the_earliest_hit_over_its_segments() {
+    let d = SmoothDispatcher::default();
+    let mut rng = Rng::new(0x0F1A_7D0E);
+    let (mut cases, mut hits) = (0usize, 0usize);
+    for _ in 0..40 {
+        let n = rng.int(1, 40);
+        let height = rng.uniform(-1.0, 1.0);
+        let hf = HeightField::new(vec![height; n + 1], Vector::new(20.0, -rng.log_uniform(0.1, 10.0)));
+        let ground = Ground {
+            name: "upside-down heightfield",
+            parts: hf
+                .segments()
+                .map(|s| (Pose::IDENTITY, Box::new(s) as Box<dyn Shape>))
+                .collect(),
+            shape: Box::new(hf.clone()),
+        };
+        let y = hf.local_aabb().maxs.y;
+        for (name, body) in bodies() {
+            // A fall from 0.5 to 2 above the ground at 60 to 300 m/s: a hit within the step.
+            let start = Pose::new(
+                Vector::new(rng.uniform(-9.0, 9.0), y + rng.uniform(0.5, 2.0)),
+                rng.angle(),
+            );
+            let v = Vector::new(rng.uniform(-5.0, 5.0), -rng.uniform(180.0, 300.0));
+            let centre = body.mass_properties(1.0).local_com;
+            let mb = NonlinearRigidMotion::new(start, centre, v, spin(&mut rng));
+            let stop = rng.chance(0.3);
+            let mc = NonlinearRigidMotion::identity();
+            let got = d
+                .cast_shapes_nonlinear(&mb, body.as_ref(), &mc, ground.shape.as_ref(), 0.0, DT, stop)
+                .expect("a heightfield at rest is supported")
+                .map(|h| h.time_of_impact);
+            let want = brute_force(&d, &mb, body.as_ref(), &ground, Pose::IDENTITY, stop);
+            assert_eq!(
+                got.map(f64::to_bits),
+                want.map(f64::to_bits),
+                "{name} against the {}: {got:?}, every segment {want:?} ({mb:?})",
+                ground.name
+            );
+            assert!(got.is_some(), "{name} falls through the {}", ground.name);
+            cases += 1;
+            hits += usize::from(got.is_some());
+        }
+    }
+    println!("{cases} casts against upside-down heightfields, {hits} hits");
+}
+
+/// The culling of a composite's parts grew their boxes by the start-contact gap of rapier's rule
+/// only, not by the level at which a part's own cast reports a hit: with a target distance
+/// (`ToiOptions::target_distance`, here 0.05 to 0.5), a body passing within it of a polyline, a
+/// heightfield or a compound got no hit where the part alone gave one; and a part far from its
+/// composite's origin (a polyline at 10⁸ to 10¹³ m), whose casts take the tolerance of their
+/// coordinates (10⁻¹⁰ of them), was culled where its cast reported a contact at the start
+/// (found by a hostile-input hunt comparing the dispatcher with every part cast by itself:
+/// about one cast in ten with a target distance, one in five far from the origin). The boxes
+/// are now grown by that level (the target distance, twice the casts' tolerance at the scale of
+/// the part's coordinates, and the start-contact gap): the answer is again the earliest hit over
+/// every part, to the bit.
+#[test]
+fn a_cast_against_a_composite_at_rest_keeps_the_target_distance_and_the_tolerance_of_far_parts() {
+    let mut rng = Rng::new(0x7A49_E7D1);
+    let (mut cases, mut hits) = (0usize, 0usize);
+    for round in 0..40 {
+        let target = rng.log_uniform(0.05, 0.5);
+        let d = SmoothDispatcher::default().with_toi_options(ToiOptions::default().with_target_distance(target));
+        let plain = SmoothDispatcher::default();
+        let far = if round % 2 == 0 {
+            Vector::ZERO
+        } else {
+            rng.direction() * 10f64.powf(rng.uniform(8.0, 13.0))
+        };
+        let mut grounds = grounds(&mut rng);
+        if far != Vector::ZERO {
+            // The polyline moved far from its origin (its parts keep their coordinates).
+            let points: Vec<Vector> = grounds[0]
+                .parts
+                .iter()
+                .flat_map(|(_, s)| {
+                    let s = s.as_shape::<Segment>().expect("a segment");
+                    [s.a, s.b]
+                })
+                .map(|p| p + far)
+                .collect();
+            let points: Vec<Vector> = points
+                .iter()
+                .step_by(2)
+                .copied()
+                .chain(points.last().copied())
+                .collect();
+            grounds = vec![Ground {
+                name: "far polyline",
+                parts: points
+                    .windows(2)
+                    .map(|w| (Pose::IDENTITY, Box::new(Segment::new(w[0], w[1])) as Box<dyn Shape>))
+                    .collect(),
+                shape: Box::new(Polyline::new(points, None)),
+            }];
+        }
+        for ground in &grounds {
+            for (name, body) in bodies() {
+                // Sliding 0.3 to 1.3 above the ground (within the target distance of its top
+                // for some), or 0.35 to 0.5 above it at 10⁸ m and more, where the parts' own
+                // tolerance (2·10⁻¹⁰ of their coordinates: 0.02 m to 2 km) makes most casts hits
+                // at the start: the culling must keep those parts too.
+                let lift = if far == Vector::ZERO {
+                    rng.uniform(0.3, 1.3)
+                } else {
+                    rng.uniform(0.35, 0.5)
+                };
+                let start = Pose::new(far + Vector::new(rng.uniform(-9.0, 9.0), lift), rng.angle());
+                let v = Vector::new(rng.sign() * rng.log_uniform(1.0, 300.0), 0.0);
+                let centre = body.mass_properties(1.0).local_com;
+                let mb = NonlinearRigidMotion::new(start, centre, v, spin(&mut rng));
+                let stop = rng.chance(0.3);
+                for d in [&d, &plain] {
+                    let got = d
+                        .cast_shapes_nonlinear(
+                            &mb,
+                            body.as_ref(),
+                            &NonlinearRigidMotion::identity(),
+                            ground.shape.as_ref(),
+                            0.0,
+                            DT,
+                            stop,
+                        )
+                        .expect("a composite at rest is supported")
+                        .map(|h| h.time_of_impact);
+                    let want = brute_force(d, &mb, body.as_ref(), ground, Pose::IDENTITY, stop);
+                    assert_eq!(
+                        got.map(f64::to_bits),
+                        want.map(f64::to_bits),
+                        "{name} against the {} (target {}): composite {got:?}, every part {want:?} ({mb:?})",
+                        ground.name,
+                        d.toi_options.target_distance
+                    );
+                    cases += 1;
+                    hits += usize::from(got.is_some());
+                }
+            }
+        }
+    }
+    println!("{cases} casts with a target distance or far from the origin, {hits} hits");
 }

@@ -1123,6 +1123,71 @@ fn custom_curve_refuses_each_broken_part_of_the_contract_naming_its_method() {
     }
 }
 
+/// Found by the hunt through composite casts (a mesh with a degenerate triangle): a flat
+/// triangle — two vertices equal, or all three on a line — had no curve, so its casts went to
+/// parry's conservative advancement; against a turning user curve (`EccentricEllipse` 0.114 ×
+/// 0.046) over a window of 384 s one cast ran for more than 15 s. A flat triangle is now its hull,
+/// the segment between its two farthest vertices: every query answers as for that `Segment`, to
+/// the bit, each within the time limit (random flat triangles, both kinds, against the user
+/// curve turning at up to 5 rad/s over windows of up to 400 s, and against the crate's ellipse).
+#[test]
+fn a_flat_triangle_answers_as_the_segment_it_is() {
+    let mut rng = common::rng::Rng::new(0xF1A7);
+    let d = SmoothDispatcher::default();
+    let (mut casts, mut hits) = (0, 0);
+    for case in 0..120 {
+        let (p, q) = (
+            Vector::new(rng.uniform(-3.0, 3.0), rng.uniform(-1.0, 1.0)),
+            Vector::new(rng.uniform(-3.0, 3.0), rng.uniform(-1.0, 1.0)),
+        );
+        // Two vertices equal, or the third between the other two.
+        let triangle = if case % 2 == 0 {
+            Triangle::new(p, q, q)
+        } else {
+            Triangle::new(p, q, p + (q - p) * rng.uniform(0.1, 0.9))
+        };
+        let segment = parry2d_f64::shape::Segment::new(p, q);
+        let s = rng.log_uniform(0.1, 1.0);
+        let body: Box<dyn Shape> = if case % 3 == 0 {
+            Box::new(Ellipse::new(0.5 * s, 0.2 * s))
+        } else {
+            Box::new(CustomCurve::new(common::curves::EccentricEllipse {
+                a: 0.5 * s,
+                b: 0.2 * s,
+                center: Vector::new(0.05 * s, 0.0),
+            }))
+        };
+        let start = Pose::new(Vector::new(rng.uniform(-4.0, 4.0), rng.uniform(1.5, 3.0)), rng.angle());
+        let aim = Vector::new(rng.uniform(-3.0, 3.0), rng.uniform(-1.0, 1.0)) - start.translation;
+        let window = rng.log_uniform(0.5, 400.0);
+        let m1 = NonlinearRigidMotion::new(start, Vector::new(0.01, 0.0), aim / window, rng.uniform(-5.0, 5.0));
+        let m2 = NonlinearRigidMotion::constant_position(Pose::IDENTITY);
+        let body: std::sync::Arc<dyn Shape> = body.into();
+        for stop in [false, true] {
+            let (b, t) = (body.clone(), triangle);
+            let on_triangle = within("cast against a flat triangle", move || {
+                SmoothDispatcher::default().cast_shapes_nonlinear(&m1, &*b, &m2, &t, 0.0, window, stop)
+            });
+            let on_segment = d.cast_shapes_nonlinear(&m1, &*body, &m2, &segment, 0.0, window, stop);
+            assert_eq!(
+                format!("{on_triangle:?}"),
+                format!("{on_segment:?}"),
+                "case {case}, stop {stop}"
+            );
+            casts += 1;
+            hits += usize::from(matches!(on_triangle, Ok(Some(_))));
+        }
+        let pos12 = start.inv_mul(&Pose::IDENTITY);
+        assert_eq!(
+            format!("{:?}", d.distance(&pos12, &*body, &triangle)),
+            format!("{:?}", d.distance(&pos12, &*body, &segment)),
+            "case {case}"
+        );
+    }
+    println!("{casts} casts against flat triangles, {hits} hits, each equal to the segment's");
+    assert!(hits > 20, "{hits}");
+}
+
 // ---------------------------------------------------------------------------------------------
 // The hostile fuzz
 // ---------------------------------------------------------------------------------------------

@@ -10,7 +10,8 @@
 /// Expands, in the module it is called in, to the composite helpers of a dispatcher `$dispatcher`
 /// (a path to a type implementing the `$parry` crate's `QueryDispatcher` and
 /// `PersistentQueryDispatcher<M, C>` for every `M: Default + Clone + Send + Sync` and
-/// `C: Default + Copy + Send + Sync`): `composite_intersection`, `composite_distance`,
+/// `C: Default + Copy + Send + Sync`, with a method `composite_cast_levels(&self) -> (Real, Real)`:
+/// the target distance and the distance tolerance of its casts): `composite_intersection`, `composite_distance`,
 /// `composite_contact`, `composite_closest_points`, `composite_cast`,
 /// `composite_cast_nonlinear` (each `Err(Unsupported)` when neither side is composite),
 /// `is_composite_like` and `composite_manifolds` (parry's `DefaultQueryDispatcher` routing of
@@ -173,10 +174,26 @@ macro_rules! composite_helpers {
                 // mesh or a compound of the static world): the parts culled by the shape's swept
                 // bounding circle, each cast in the caller's order.
                 (None, Some(c2)) if still(m2) => Ok(cast_against_still_composite(
-                    d, m1, g1, m2, c2, t0, t1, stop, false,
+                    d,
+                    m1,
+                    g1,
+                    m2,
+                    (g2, c2),
+                    t0,
+                    t1,
+                    stop,
+                    false,
                 )),
                 (Some(c1), None) if still(m1) => Ok(cast_against_still_composite(
-                    d, m2, g2, m1, c1, t0, t1, stop, true,
+                    d,
+                    m2,
+                    g2,
+                    m1,
+                    (g1, c1),
+                    t0,
+                    t1,
+                    stop,
+                    true,
                 )),
                 (Some(c1), _) => Ok(details::cast_shapes_nonlinear_composite_shape_shape(
                     d, m1, c1, m2, g2, t0, t1, stop,
@@ -189,11 +206,12 @@ macro_rules! composite_helpers {
         }
 
         /// The nonlinear cast of the convex `body` moving by `mb` against the composite `comp` at
-        /// rest at `mc`'s pose, the pair in the caller's order (`comp` first when
-        /// `comp_first`). The earliest hit over the composite's parts, each part cast by `d`;
-        /// the BVH is walked from the earliest time the body can reach a node's box (the ray of
-        /// its rotation centre against the box grown by the body's extent about that centre, a
-        /// lower bound on any hit of a part inside it), so parts the body cannot reach are
+        /// rest at `mc`'s pose (`whole`: the same composite as a shape), the pair in the caller's
+        /// order (`comp` first when `comp_first`). The earliest hit over the composite's parts,
+        /// each part cast by `d`; the BVH is walked from the earliest time the body can reach a
+        /// node's box (the ray of its rotation centre against the box grown by the body's extent
+        /// about that centre and by the level a part's cast may report a hit at, [`hit_level`]:
+        /// a lower bound on any hit of a part inside it), so parts the body cannot reach are
         /// never cast. The extent ([`swept_extent`]): the bounding circle about the rotation
         /// centre, which the spin does not move; where the body turns by less than half a turn
         /// over the window, within it its boxes at both ends grown by what the turn can move a
@@ -205,7 +223,7 @@ macro_rules! composite_helpers {
             mb: &NonlinearRigidMotion,
             body: &dyn Shape,
             mc: &NonlinearRigidMotion,
-            comp: &dyn $parry::shape::CompositeShape,
+            (whole, comp): (&dyn Shape, &dyn $parry::shape::CompositeShape),
             t0: Real,
             t1: Real,
             stop: bool,
@@ -217,13 +235,15 @@ macro_rules! composite_helpers {
             let v = pose.rotation.inverse() * mb.linvel;
             let (lo_ext, hi_ext, reach) = swept_extent(mb, body, &pose, t0, t1);
             // The first time in [t0, t1] at which c(t) enters the box grown by the extent and
-            // by the start-contact gap of rapier's rule (a part that close at the start is in
-            // contact there) with a margin for rounding.
+            // by the level of a hit of a part inside it, with a margin for rounding.
             let scale = c0.abs().max_element() + v.abs().max_element() * (t1 - t0).abs() + reach;
+            let (body_scale, offset) = (origin_radius(body), part_offset(whole, comp));
             let entry = |mins: Vector, maxs: Vector| -> Real {
                 let size = reach + 0.5 * (maxs - mins).length();
-                let far = scale + mins.abs().max(maxs.abs()).max_element();
-                let margin = ($crate::CastPolicy::START_CONTACT_GAP as Real) * size + 16.0 * Real::EPSILON * far;
+                let corner = mins.abs().max(maxs.abs());
+                let far = scale + corner.max_element();
+                let level = hit_level(d, body_scale.max(corner.length() + offset), size);
+                let margin = level + 16.0 * Real::EPSILON * far;
                 let (lo, hi) = (
                     mins - hi_ext - Vector::splat(margin),
                     maxs - lo_ext + Vector::splat(margin),
@@ -325,6 +345,90 @@ macro_rules! composite_helpers {
             }
         }
 
+        /// The level under which the cast of a body against one part of a composite may report
+        /// a hit, which the culling of [`cast_against_still_composite`] and
+        /// [`cast_against_heightfield`] grows the parts' boxes by: the target distance δ, twice
+        /// the tolerance τ·s of the trackers and of the separating-axis advancement (τ the
+        /// dispatcher's `distance_tolerance`; s, `scale`, at least the pair's larger bounding
+        /// radius about its shapes' local origins), and the start-contact gap of rapier's rule
+        /// (of the pair's size, `size`). A part further from the body than this over the whole
+        /// window is no hit; a part within it may be one (a target distance of 1 m; a segment
+        /// 10¹³ m from its polyline's origin, whose tolerance is 2·10³ m).
+        fn hit_level(d: &$dispatcher, scale: Real, size: Real) -> Real {
+            let (delta, tau) = d.composite_cast_levels();
+            delta.max(0.0) + 2.0 * tau.max(0.0) * scale + ($crate::CastPolicy::START_CONTACT_GAP as Real) * size
+        }
+
+        /// The radius of the shape `g`'s bounding circle about its local origin (the scale of its
+        /// casts' tolerances, [`hit_level`]).
+        fn origin_radius(g: &dyn Shape) -> Real {
+            let sphere = g.compute_local_bounding_sphere();
+            sphere.radius + sphere.center.length()
+        }
+
+        /// A bound on the distance from the composite's origin to the local origin of any of
+        /// its parts (`whole`: the composite as a shape), so that a part within a box whose
+        /// farthest corner is ρ from the composite's origin is within ρ plus this of its own
+        /// ([`hit_level`]'s scale): 0 for a polyline or a mesh, whose parts are in its frame; the
+        /// farthest child's translation for a compound (and for a user's composite, over its
+        /// parts).
+        fn part_offset(whole: &dyn Shape, comp: &dyn $parry::shape::CompositeShape) -> Real {
+            use $parry::shape::TypedCompositeShape as _;
+            use $parry::shape::TypedShape;
+            match whole.as_typed_shape() {
+                TypedShape::Polyline(_) | TypedShape::TriMesh(_) => 0.0,
+                TypedShape::Compound(c) => c
+                    .shapes()
+                    .iter()
+                    .fold(0.0, |m: Real, (p, _)| m.max(p.translation.length())),
+                _ => comp.bvh().leaves(|_| true).fold(0.0, |m: Real, i| {
+                    let p = comp.map_untyped_part_at(i, |p, _, _| p.map_or(0.0, |p| p.translation.length()));
+                    m.max(p.unwrap_or(0.0))
+                }),
+            }
+        }
+
+        /// Calls `f` on each segment of `hf` whose bounding box meets `aabb` (both in the
+        /// heightfield's frame), with its index: the cells under the box's x range and one more
+        /// on each side (the rounding of the division), each segment's own box then checked;
+        /// every cell when the division is not finite (a heightfield of width 0). Not parry's
+        /// `map_elements_in_local_aabb`, which compares the box divided by the scale with the
+        /// unscaled heights: a negative vertical scale (a flat heightfield's, whose box is then
+        /// not inverted) turns the comparison around, and it skipped the segments under the box.
+        fn heightfield_segments_in(
+            hf: &$parry::shape::HeightField,
+            aabb: &$parry::bounding_volume::Aabb,
+            f: &mut impl FnMut(u32, &$parry::shape::Segment),
+        ) {
+            let n = hf.num_cells();
+            let (x0, w) = (hf.start_x(), hf.cell_width());
+            let (a, b) = ((aabb.mins.x - x0) / w, (aabb.maxs.x - x0) / w);
+            let (lo, hi) = (a.min(b), a.max(b));
+            let (first, last) = if lo.is_finite() && hi.is_finite() {
+                if hi < -1.0 || lo > n as Real + 1.0 {
+                    return;
+                }
+                (
+                    (lo.floor() - 1.0).max(0.0) as usize,
+                    (hi.ceil() + 1.0).min(n as Real) as usize,
+                )
+            } else {
+                (0, n)
+            };
+            for i in first..last {
+                if let Some(seg) = hf.segment_at(i) {
+                    let (mins, maxs) = (seg.a.min(seg.b), seg.a.max(seg.b));
+                    let meets = mins.x <= aabb.maxs.x
+                        && maxs.x >= aabb.mins.x
+                        && mins.y <= aabb.maxs.y
+                        && maxs.y >= aabb.mins.y;
+                    if meets {
+                        f(i as u32, &seg);
+                    }
+                }
+            }
+        }
+
         /// The nonlinear cast of the convex `body` moving by `mb` against the heightfield `hf`
         /// moving by `mh`, in the caller's order (`hf` first when `hf_first`): the earliest hit
         /// over its segments, each cast by `d`. At rest (rapier's CCD), only the segments under
@@ -369,19 +473,20 @@ macro_rules! composite_helpers {
                 let centre = |t: Real| pose.inverse_transform_point(mb.start * mb.local_center + mb.linvel * t);
                 let (lo, hi, reach) = swept_extent(mb, body, &pose, t0, t1);
                 let (a, b) = (centre(t0), centre(t1));
-                // The start-contact gap of rapier's rule (of the pair's size, at most the body's
-                // circle and the whole heightfield) and a margin for rounding.
+                // The level of a hit ([`hit_level`]: the pair's size at most the body's circle and
+                // the whole heightfield, whose segments are in its frame) and a margin for rounding.
                 let whole = hf.local_aabb();
-                let far =
-                    a.abs().max(b.abs()).max_element() + reach + whole.mins.abs().max(whole.maxs.abs()).max_element();
-                let margin = Vector::splat(
-                    ($crate::CastPolicy::START_CONTACT_GAP as Real)
-                        * (reach + 0.5 * (whole.maxs - whole.mins).length())
-                        + 16.0 * Real::EPSILON * far,
+                let corner = whole.mins.abs().max(whole.maxs.abs());
+                let far = a.abs().max(b.abs()).max_element() + reach + corner.max_element();
+                let level = hit_level(
+                    d,
+                    origin_radius(body).max(corner.length()),
+                    reach + 0.5 * (whole.maxs - whole.mins).length(),
                 );
+                let margin = Vector::splat(level + 16.0 * Real::EPSILON * far);
                 let aabb = $parry::bounding_volume::Aabb::new(a.min(b) + lo - margin, a.max(b) + hi + margin);
                 if aabb.mins.is_finite() && aabb.maxs.is_finite() {
-                    hf.map_elements_in_local_aabb(&aabb, &mut each);
+                    heightfield_segments_in(hf, &aabb, &mut each);
                     return best;
                 }
             }
@@ -521,3 +626,11 @@ macro_rules! composite_helpers {
 }
 
 composite_helpers!(parry2d_f64, crate::SmoothDispatcher);
+
+impl crate::SmoothDispatcher {
+    /// The target distance and the distance tolerance of the dispatcher's casts: the options
+    /// the culling of a composite's parts reads (`hit_level` of `composite_helpers!`).
+    pub(crate) fn composite_cast_levels(&self) -> (Real, Real) {
+        (self.toi_options.target_distance, self.toi_options.distance_tolerance)
+    }
+}

@@ -10,8 +10,9 @@ use super::parry_fallback::parry_contact;
 use super::route::{curves_toi, own_curve, route, CurveOf, Route, RouteScratch};
 use super::support_shape::exact_contact;
 use super::SmoothDispatcher;
+use crate::curve::ConvexCurve;
 use crate::numerics::math::{Pose, Real, Vector};
-use crate::query::gap::gap_distance;
+use crate::query::gap::{gap_distance, gap_time_of_impact};
 use crate::query::toi::{bounding_circles_part, ToiOptions};
 use parry2d_f64::query::details::ShapeCastOptions;
 use parry2d_f64::query::{
@@ -34,6 +35,25 @@ fn gap_pair_distance(c1: &CurveOf, c2: &CurveOf, pos12: &Pose) -> Option<GapDist
     let (d, p1, p2, n1) = gap_distance(a, b, pos12)?;
     let n2 = pos12.rotation.inverse() * -n1;
     (d.is_finite() && p1.is_finite() && p2.is_finite() && n2.is_finite()).then_some((d, p1, p2, n1, n2))
+}
+
+/// A time after which two shapes, shape 2 translating from `pos12` at `vel12` in shape 1's
+/// frame, are never within `delta` of each other: twice the time for the centres' distance to
+/// grow past |pos12| plus both bounding radii and δ (at that time it is at least |vel12|·t − |pos12|).
+/// `None` when it is not a finite positive number (no motion, or one too slow to measure).
+fn linear_horizon(a: &dyn ConvexCurve, b: &dyn ConvexCurve, pos12: &Pose, vel12: Vector, delta: Real) -> Option<Real> {
+    let reach = pos12.translation.length() + a.bounding_radius() + b.bounding_radius() + delta.max(0.0);
+    let h = 2.0 * reach / vel12.length();
+    (h.is_finite() && h > 0.0).then_some(h)
+}
+
+/// The window's end `t1` cut at the horizon `h` when there is one; a NaN end stays NaN (the
+/// tracker refuses it, as it refuses any non-finite input).
+fn bounded(t1: Real, h: Option<Real>) -> Real {
+    match h {
+        Some(h) if !t1.is_nan() => t1.min(h),
+        _ => t1,
+    }
 }
 
 impl QueryDispatcher for SmoothDispatcher {
@@ -199,28 +219,57 @@ impl QueryDispatcher for SmoothDispatcher {
         g2: &dyn Shape,
         options: ShapeCastOptions,
     ) -> Result<Option<ShapeCastHit>, Unsupported> {
+        // Shape 1 at rest at the origin, shape 2 translating from `pos12`: the linear cast as a
+        // time of impact, with the caller's target distance and penetration rule.
+        let m1 = NonlinearRigidMotion::identity();
+        let m2 = NonlinearRigidMotion::new(*pos12, Vector::ZERO, local_vel12, 0.0);
+        let opts = ToiOptions {
+            target_distance: options.target_distance,
+            stop_at_penetration: options.stop_at_penetration,
+            ..self.toi_options
+        };
+        let (t1, delta) = (options.max_time_of_impact, options.target_distance);
         match route(g1, g2, &mut RouteScratch::default()) {
             Route::Curves { c1, c2, swapped } => {
-                let m1 = NonlinearRigidMotion::identity();
-                let m2 = NonlinearRigidMotion::new(*pos12, Vector::ZERO, local_vel12, 0.0);
-                let opts = ToiOptions {
-                    target_distance: options.target_distance,
-                    stop_at_penetration: options.stop_at_penetration,
-                    ..self.toi_options
-                };
                 // time_of_impact takes the shapes in the caller's order (it swaps roles itself).
                 let (a, b) = if swapped { (&c2, &c1) } else { (&c1, &c2) };
-                let (t1, delta) = (options.max_time_of_impact, options.target_distance);
+                // An infinite window (parry takes one) ends where the bounding circles are past
+                // each other; a finite one is the caller's.
+                let t1 = if t1 == Real::INFINITY {
+                    bounded(t1, linear_horizon(a.get(), b.get(), pos12, local_vel12, delta))
+                } else {
+                    t1
+                };
                 if bounding_circles_part(a.get(), &m1, b.get(), &m2, 0.0, t1, delta) {
                     return Ok(None);
                 }
                 let r = curves_toi(a, &m1, b, &m2, 0.0, t1, &opts);
                 toi_to_parry(r.map(Some))
             }
+            // No strictly convex side (a rounded polygon or a capsule-ellipse against a box, a
+            // segment, a polygon…): the gap tracker, exact as the curves' tracker is. parry's
+            // linear cast of such a pair (GJK on the support maps) stops short by up to about
+            // 1e-8 of the size: a character controller sliding a rounded box over the ground
+            // ended its casts 3e-8 m off its offset.
+            Route::Gap { c1, c2 } => match (c1.gap_side(), c2.gap_side()) {
+                (Some(p1), Some(p2)) => {
+                    if bounding_circles_part(c1.get(), &m1, c2.get(), &m2, 0.0, t1, delta) {
+                        return Ok(None);
+                    }
+                    // parry's default window is `Real::MAX`, which the gap tracker cannot step
+                    // through: the window ends where the bounding circles are past each other.
+                    let t1 = bounded(t1, linear_horizon(c1.get(), c2.get(), pos12, local_vel12, delta));
+                    toi_to_parry(gap_time_of_impact(p1, &m1, p2, &m2, 0.0, t1, &opts).map(Some))
+                }
+                _ => input_guard::parry(pos12, g1, g2, 0.0, || {
+                    DefaultQueryDispatcher.cast_shapes(pos12, local_vel12, g1, g2, options)
+                }),
+            },
             Route::Composite => input_guard::parry(pos12, g1, g2, 0.0, || {
                 composite_cast(self, pos12, local_vel12, g1, g2, options)
             }),
-            // Linear casts against half-spaces and polygonal pairs are exact in parry.
+            // Linear casts against half-spaces (a support point along the plane's normal) are
+            // exact in parry.
             _ => input_guard::parry(pos12, g1, g2, 0.0, || {
                 DefaultQueryDispatcher.cast_shapes(pos12, local_vel12, g1, g2, options)
             }),

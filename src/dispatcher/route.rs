@@ -113,6 +113,41 @@ pub(crate) fn own_curve(s: &dyn Shape) -> Option<&dyn ConvexCurve> {
     }
 }
 
+/// A triangle as the polygon of its vertices counter-clockwise, with their count: the three
+/// vertices ([`ccw_triangle`]), or, for a flat triangle — its doubled area, taken from its first
+/// vertex, at most [`FLAT_TRIANGLE`] of its longest edge squared: its vertices on a line to
+/// rounding — the segment between its two farthest vertices (a mesh's degenerate triangle, whose
+/// hull that segment is; left to parry's conservative advancement, such a triangle's cast against
+/// a turning user curve ran for more than 15 s). `None` when the three vertices coincide or one
+/// is not finite.
+pub(crate) fn triangle_hull(v: [Vector; 3]) -> Option<([Vector; 3], usize)> {
+    if let Some(t) = ccw_triangle(v) {
+        return Some((t, 3));
+    }
+    if !v.iter().all(|p| p.is_finite()) {
+        return None;
+    }
+    let edge = |i: usize, j: usize| (v[j] - v[i]).length_squared();
+    // The first longest edge (a triangle (p, q, q) is the segment from p to q).
+    let (i, j) =
+        [(1, 2), (2, 0)].into_iter().fold(
+            (0, 1),
+            |best, e| if edge(e.0, e.1) > edge(best.0, best.1) { e } else { best },
+        );
+    let longest = edge(i, j);
+    if !(longest > 0.0 && longest.is_finite()) {
+        return None;
+    }
+    let area2 = cross(v[1] - v[0], v[2] - v[0]);
+    if area2.abs() > FLAT_TRIANGLE * longest {
+        // Not flat: a triangle far from the origin, whose area about the origin the rounding of
+        // its coordinates hides; in counter-clockwise order from its own first vertex.
+        let t = if area2 > 0.0 { v } else { [v[2], v[1], v[0]] };
+        return Some((t, 3));
+    }
+    Some(([v[i], v[j], v[j]], 2))
+}
+
 /// Puts a triangle in counter-clockwise order; `None` when it is degenerate (or not finite).
 pub(crate) fn ccw_triangle(mut v: [Vector; 3]) -> Option<[Vector; 3]> {
     let mut area2 = 0.0;
@@ -175,10 +210,12 @@ pub(crate) fn curve_of<'a>(s: &'a dyn Shape, slot: &'a mut Option<InlinePolygon>
         }
         polygon_curve(&[sg.a, sg.b], 0.0, slot)
     } else if let Some(t) = s.as_shape::<Triangle>() {
-        polygon_curve(&ccw_triangle([t.a, t.b, t.c])?, 0.0, slot)
+        let (v, n) = triangle_hull([t.a, t.b, t.c])?;
+        polygon_curve(&v[..n], 0.0, slot)
     } else if let Some(t) = s.as_shape::<RoundTriangle>() {
         let t2 = &t.inner_shape;
-        polygon_curve(&ccw_triangle([t2.a, t2.b, t2.c])?, t.border_radius, slot)
+        let (v, n) = triangle_hull([t2.a, t2.b, t2.c])?;
+        polygon_curve(&v[..n], t.border_radius, slot)
     } else if let Some(p) = s.as_shape::<ConvexPolygon>() {
         polygon_curve(p.points(), 0.0, slot)
     } else if let Some(p) = s.as_shape::<RoundConvexPolygon>() {
@@ -523,15 +560,41 @@ mod tests {
             ),
             (small.as_ref().expect("convex"), true),
             (large.as_ref().expect("convex"), false),
-            (&Triangle::new(Vector::ZERO, Vector::X, Vector::X * 2.0), false),
+            // Flat: the segment from 0 to 2x.
+            (&Triangle::new(Vector::ZERO, Vector::X, Vector::X * 2.0), true),
         ];
         for (k, (shape, inline)) in shapes.into_iter().enumerate() {
             match curve_of(shape, &mut None) {
                 Some(CurveOf::Inline(_)) => assert!(inline, "shape {k}"),
                 Some(CurveOf::Poly(_)) => assert!(!inline && k == 5, "shape {k}"),
-                None => assert_eq!(k, 6, "only the flat triangle is rejected"),
+                None => panic!("shape {k}: not converted"),
                 Some(_) => panic!("shape {k}: not a polygon"),
             }
+        }
+        let flat = Triangle::new(Vector::ZERO, Vector::X, Vector::X * 2.0);
+        let mut slot = None;
+        let c = curve_of(&flat, &mut slot).expect("a segment");
+        assert_eq!(c.get().support_point(Vector::X), Vector::X * 2.0);
+        assert_eq!(c.get().support_point(-Vector::X), Vector::ZERO);
+        // Three coinciding vertices are no shape.
+        assert!(curve_of(&Triangle::new(Vector::X, Vector::X, Vector::X), &mut None).is_none());
+        // A triangle 1e7 from the origin is a triangle, in either order, rounded or not.
+        let far = Vector::new(1e7, -1e7);
+        let (x, y) = (far + Vector::new(1.0, 0.0), far + Vector::new(0.0, 1.0));
+        for t in [Triangle::new(far, x, y), Triangle::new(far, y, x)] {
+            let mut slot = None;
+            let c = curve_of(&t, &mut slot).expect("a triangle");
+            assert_eq!(c.get().support_point(Vector::new(-1.0, -1.0)), far);
+            assert_eq!(c.get().support_point(Vector::new(1.0, -0.1)), x);
+            assert_eq!(c.get().support_point(Vector::new(-0.1, 1.0)), y);
+            let round = RoundTriangle {
+                inner_shape: t,
+                border_radius: 0.25,
+            };
+            let mut slot = None;
+            let c = curve_of(&round, &mut slot).expect("a rounded triangle");
+            let p = c.get().support_point(Vector::new(0.0, -1.0));
+            assert!((p.y - (far.y - 0.25)).abs() < 1e-6, "{p:?}");
         }
         // The triangle's curve is counter-clockwise: the support along +x is the vertex (1, 0).
         let t = Triangle::new(Vector::ZERO, Vector::new(0.0, 1.0), Vector::new(1.0, 0.0));

@@ -4,7 +4,7 @@
 //! caller's [`SupportScratch`] on the stack. No curve is built.
 
 use super::input_guard;
-use super::route::{box_vertices, ccw_triangle};
+use super::route::{box_vertices, triangle_hull};
 use crate::numerics::math::{perp, Pose, Vector};
 use crate::query::contact::{contact, Contact, SupportShape};
 use crate::{CapsuleEllipse, Ellipse, RoundedPolygon};
@@ -124,12 +124,14 @@ pub(crate) fn support_shape<'a>(s: &'a dyn Shape, scratch: &'a mut SupportScratc
         }
         ShapeType::Triangle => {
             let t = s.as_shape::<Triangle>()?;
-            scratch.polygon(&ccw_triangle([t.a, t.b, t.c])?, 0.0)
+            let (v, n) = triangle_hull([t.a, t.b, t.c])?;
+            scratch.polygon(&v[..n], 0.0)
         }
         ShapeType::RoundTriangle => {
             let t = s.as_shape::<RoundTriangle>()?;
             let t2 = &t.inner_shape;
-            scratch.polygon(&ccw_triangle([t2.a, t2.b, t2.c])?, t.border_radius)
+            let (v, n) = triangle_hull([t2.a, t2.b, t2.c])?;
+            scratch.polygon(&v[..n], t.border_radius)
         }
         ShapeType::Segment => {
             let sg = s.as_shape::<Segment>()?;

@@ -3,3 +3,13 @@
 //! (its hidden `composite_helpers!` macro), instantiated here for parry2d.
 
 smooth_ccd2d::composite_helpers!(parry2d, crate::SmoothDispatcher);
+
+impl crate::SmoothDispatcher {
+    /// The target distance and the distance tolerance of the dispatcher's casts (those of its
+    /// core), in f32: the options the culling of a composite's parts reads (`hit_level` of
+    /// `composite_helpers!`).
+    pub(crate) fn composite_cast_levels(&self) -> (Real, Real) {
+        let o = &self.core.toi_options;
+        (o.target_distance as Real, o.distance_tolerance as Real)
+    }
+}
