@@ -63,12 +63,21 @@ fn characters() -> Vec<(&'static str, SharedShape, f64, f64)> {
 
 /// A world of fixed colliders stepped once (the broad phase holds them), with `SmoothDispatcher`.
 fn level(colliders: Vec<ColliderBuilder>) -> World {
-    let mut w = World::new(NarrowPhase::with_query_dispatcher(SmoothDispatcher::default()));
+    let mut w = World::new(narrow_phase(true));
     for c in colliders {
         w.colliders.insert(c);
     }
     w.step(world::GRAVITY, &());
     w
+}
+
+/// `SmoothDispatcher` as the narrow phase's dispatcher (`smooth`), or rapier's default.
+fn narrow_phase(smooth: bool) -> NarrowPhase {
+    if smooth {
+        NarrowPhase::with_query_dispatcher(SmoothDispatcher::default())
+    } else {
+        NarrowPhase::new()
+    }
 }
 
 /// The flat ground: its top at y = 0.
@@ -136,6 +145,18 @@ fn walk(w: &World, ctl: &KinematicCharacterController, shape: &dyn Shape, half_h
     }
 }
 
+/// The checks every walk passes: finite positions throughout, and each converged cast hit of the
+/// controller exactly its offset from what it hit (to 1e-12 m).
+fn assert_exact_walk(end: &Walk, what: &str) {
+    assert!(end.finite, "{what}: a position was not finite");
+    assert!(
+        end.converged_hits > 0 && end.worst_gap_error < 1e-12,
+        "{what}: {} hits, gap off by {:e}",
+        end.converged_hits,
+        end.worst_gap_error
+    );
+}
+
 /// How far the controller's nudge off a surface it slides on (`normal_nudge_factor`, 1e-4 by
 /// default; without it the character sticks to the ground it walks on) may move it from the
 /// exact stop, with the rounding of 600 steps.
@@ -192,13 +213,7 @@ fn a_character_of_this_crates_shapes_walks_on_the_ground_and_stops_at_a_wall_at_
                 "{name} against a {wall_name} wall: ends at ({:.9}, {:.9}), expected ({:.9}, {:.9}); grounded {} of {STEPS} steps; {} cast hits, gap off by {:.1e} at most",
                 end.pos.x, end.pos.y, expected.x, expected.y, end.grounded_steps, end.converged_hits, end.worst_gap_error
             );
-            assert!(end.finite, "{name}, {wall_name}: a position was not finite");
-            assert!(
-                end.converged_hits > 0 && end.worst_gap_error < 1e-12,
-                "{name}, {wall_name}: {} hits, gap off by {:e}",
-                end.converged_hits,
-                end.worst_gap_error
-            );
+            assert_exact_walk(&end, &format!("{name}, {wall_name}"));
             // The controller stops at its offset from the wall and rests at its offset above the
             // ground, give or take the nudge it adds off a surface it slides on.
             assert!(
@@ -248,7 +263,7 @@ fn a_character_of_this_crates_shapes_walks_on_flat_ground_and_climbs_a_step_as_f
             }
         };
         let ours = level(colliders());
-        let mut parrys = World::new(NarrowPhase::new());
+        let mut parrys = World::new(narrow_phase(false));
         for c in colliders() {
             parrys.colliders.insert(c);
         }
@@ -261,13 +276,7 @@ fn a_character_of_this_crates_shapes_walks_on_flat_ground_and_climbs_a_step_as_f
                 "{name}, step {with_step}: ends at ({:.6}, {:.9}), grounded {} of {STEPS} steps; parry's closest shape ({:.6}, {:.9}), grounded {}",
                 end.pos.x, end.pos.y, end.grounded_steps, theirs.pos.x, theirs.pos.y, theirs.grounded_steps
             );
-            assert!(end.finite, "{name}: a position was not finite");
-            assert!(
-                end.converged_hits > 0 && end.worst_gap_error < 1e-12,
-                "{name}: {} hits, gap off by {:e}",
-                end.converged_hits,
-                end.worst_gap_error
-            );
+            assert_exact_walk(&end, name);
             assert!(
                 in_band(end.pos.y, floor + hh + offset(hh), NUDGE),
                 "{name}, step {with_step}: y {}",
@@ -301,11 +310,7 @@ fn a_character_pushes_a_dynamic_body_of_this_crates_shapes_as_it_pushes_parrys_o
     // which reads this crate's shapes by their support maps.
     let mut moved = vec![];
     for smooth in [false, true] {
-        let np = if smooth {
-            NarrowPhase::with_query_dispatcher(SmoothDispatcher::default())
-        } else {
-            NarrowPhase::new()
-        };
+        let np = narrow_phase(smooth);
         let mut w = World::new(np);
         w.colliders.insert(ground());
         let crate_shape = if smooth {
@@ -375,11 +380,7 @@ fn scene_queries_on_discs_of_this_crate_answer_the_closed_forms_and_as_parry_on_
     // once as this crate's `Ellipse::new(r, r)` with `SmoothDispatcher`, once as parry's `Ball`
     // with rapier's default narrow phase; a probe disc of radius 0.2 for the shape queries.
     let build = |smooth: bool| {
-        let np = if smooth {
-            NarrowPhase::with_query_dispatcher(SmoothDispatcher::default())
-        } else {
-            NarrowPhase::new()
-        };
+        let np = narrow_phase(smooth);
         let mut w = World::new(np);
         for (x, y) in [(-3.0, 0.0), (0.0, 0.3), (3.0, 0.6)] {
             let shape = if smooth {
