@@ -14,11 +14,12 @@
 //! * **deepest**: after every step in which rapier's CCD swept a body (`is_ccd_active`), that
 //!   body's deepest penetration into anything it sweeps, by the method's own contact query, as a
 //!   fraction of its `ccd_thickness` too;
-//! * **apart**: after such a step, the body's deepest penetration into a fixed target it was
+//! * **apart**: after such a step of a launched body (CCD on; this crate's shape with
+//!   `SmoothDispatcher`), its deepest penetration into a fixed target it was
 //!   apart from at the step's start (by more than [`APART_GAP`] of the pair's size): rapier's
 //!   CCD stops the body where it touches, so this is the cast's exactness on the pose rapier
 //!   applies — but for a target rapier's candidate search never hands the cast;
-//! * **centre**: after such a step, the least signed distance from the body's centre of mass to
+//! * **centre**: after such a step of a launched body, the least signed distance from its centre of mass to
 //!   a fixed target's solid, as a fraction of its `ccd_thickness` (what the start-contact rule's
 //!   core keeps: at least an eighth with `SmoothDispatcher`);
 //! * the time of each `PhysicsPipeline::step`.
@@ -230,7 +231,8 @@ fn apart_pairs(scene: &Scene, method: Method) -> Vec<(ColliderHandle, ColliderHa
     out
 }
 
-/// After a step, for the bodies rapier's CCD swept in it: the deepest penetration (m) into a
+/// After a step, for the CCD-enabled bodies (the launched ones) rapier's CCD swept in it: the
+/// deepest penetration (m) into a
 /// fixed target of a pair that `apart` holds (apart at the step's start), and the smallest
 /// signed distance from the body's centre of mass to a fixed target's solid, over the body's
 /// `ccd_thickness` (`INFINITY` if none).
@@ -239,7 +241,9 @@ fn after_sweep_checks(scene: &Scene, method: Method, apart: &[(ColliderHandle, C
     let (mut deepest, mut clearance) = (0.0f64, f64::INFINITY);
     for h in &scene.dynamic {
         let rb = &scene.world.bodies[*h];
-        if !rb.is_ccd_active() {
+        // The case's launched bodies (CCD on: this crate's shapes with `SmoothDispatcher`), in
+        // the steps rapier's CCD swept them.
+        if !(rb.is_ccd_enabled() && rb.is_ccd_active()) {
             continue;
         }
         let com = rb.center_of_mass();
