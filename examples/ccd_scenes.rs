@@ -4,8 +4,10 @@
 //! from 10 to 3000 m/s and spins to 600 rad/s (rapier's caps lifted where a case is above them),
 //! run headless in rapier2d-f64 with `SmoothDispatcher` and, side by side, with rapier's default
 //! narrow phase on parry's closest shapes. Prints one table by family: cases, bodies through a
-//! wall, frozen bodies, NaN, panics, the deepest penetration after a CCD-swept step and the mean
-//! step time (with the ratio, this crate's over rapier's), with the suite's totals over all cases
+//! wall, frozen bodies, NaN, panics, the deepest penetration after a CCD-swept step, the deepest
+//! after such a step into a fixed target the body was apart from at its start ("apart m"), the
+//! least distance from a swept body's centre to a fixed target over its `ccd_thickness`
+//! ("centre") and the mean step time (with the ratio, this crate's over rapier's), with the suite's totals over all cases
 //! and over the cases neither method fails, then the cases that failed.
 //!
 //! Run: `cargo run --release --example ccd_scenes` (optionally a family name, dashes for spaces,

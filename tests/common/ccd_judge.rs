@@ -14,6 +14,14 @@
 //! * **deepest**: after every step in which rapier's CCD swept a body (`is_ccd_active`), that
 //!   body's deepest penetration into anything it sweeps, by the method's own contact query, as a
 //!   fraction of its `ccd_thickness` too;
+//! * **apart**: after such a step of a launched body (CCD on; this crate's shape with
+//!   `SmoothDispatcher`), its deepest penetration into a fixed target it was
+//!   apart from at the step's start (by more than [`APART_GAP`] of the pair's size): rapier's
+//!   CCD stops the body where it touches, so this is the cast's exactness on the pose rapier
+//!   applies — but for a target rapier's candidate search never hands the cast;
+//! * **centre**: after such a step of a launched body, the least signed distance from its centre of mass to
+//!   a fixed target's solid, as a fraction of its `ccd_thickness` (what the start-contact rule's
+//!   core keeps: at least an eighth with `SmoothDispatcher`);
 //! * the time of each `PhysicsPipeline::step`.
 #![allow(dead_code)]
 
@@ -54,6 +62,13 @@ pub struct Outcome {
     /// `ccd_thickness`.
     pub deepest: f64,
     pub deepest_rel: f64,
+    /// Of the pairs (a CCD-swept body, a fixed target) apart at the step's start, the deepest
+    /// penetration at the step's end (m): rapier's CCD stops such a body at the touching pose.
+    pub apart_deepest: f64,
+    /// The closest a CCD-swept body's centre of mass came to a fixed target at the end of a
+    /// step (signed distance to the target's solid, as a fraction of the body's
+    /// `ccd_thickness`; `INFINITY` when no swept body ended a step near one).
+    pub centre_clearance: f64,
     /// Seconds spent in `PhysicsPipeline::step`, and the steps run.
     pub seconds: f64,
     pub steps: usize,
@@ -90,6 +105,7 @@ pub fn run_case(case: &Case, method: Method) -> Outcome {
                     .or_else(|| e.downcast_ref::<&str>().map(|s| s.to_string()))
                     .unwrap_or_else(|| "panic".into()),
             ),
+            centre_clearance: f64::INFINITY,
             ..Outcome::default()
         },
     }
@@ -97,7 +113,10 @@ pub fn run_case(case: &Case, method: Method) -> Outcome {
 
 fn run_inner(case: &Case, method: Method) -> Outcome {
     let mut scene = build(case, method);
-    let mut out = Outcome::default();
+    let mut out = Outcome {
+        centre_clearance: f64::INFINITY,
+        ..Outcome::default()
+    };
     let mut still = vec![0usize; scene.dynamic.len()];
     let radii: Vec<f64> = scene.dynamic.iter().map(|h| body_radius(&scene, *h, case)).collect();
     for step in 0..scene.steps {
@@ -119,6 +138,7 @@ fn run_inner(case: &Case, method: Method) -> Outcome {
             .iter()
             .map(|(h, co)| (h, *co.position()))
             .collect();
+        let apart = apart_pairs(&scene, method);
         let t = Instant::now();
         scene.world.step(scene.gravity, &());
         out.seconds += t.elapsed().as_secs_f64();
@@ -163,8 +183,93 @@ fn run_inner(case: &Case, method: Method) -> Outcome {
             out.deepest = d;
         }
         out.deepest_rel = out.deepest_rel.max(rel);
+        let (apart_deepest, clearance) = after_sweep_checks(&scene, method, &apart);
+        out.apart_deepest = out.apart_deepest.max(apart_deepest);
+        out.centre_clearance = out.centre_clearance.min(clearance);
     }
     out
+}
+
+/// A body's distance from a fixed target at the step's start below which the pair counts as in
+/// contact there, as a fraction of the pair's size (the sum of the two shapes' bounding radii):
+/// `CastPolicy::Rapier` takes pairs within 10⁻⁶ of that size (of a part's, for a composite
+/// target) as in contact; this is ten times wider, so that no pair the rule treats as in
+/// contact is judged as apart.
+pub const APART_GAP: f64 = 1e-5;
+
+/// The method's dispatcher for the judge's own contact queries.
+fn judge_dispatcher(method: Method) -> Box<dyn QueryDispatcher> {
+    match method {
+        Method::Smooth => Box::new(SmoothDispatcher::default()),
+        Method::Rapier => Box::new(DefaultQueryDispatcher),
+    }
+}
+
+/// The pairs (a collider of a CCD-enabled dynamic body, a fixed collider) apart at the step's
+/// start by more than [`APART_GAP`] of the pair's size, by the method's contact query.
+fn apart_pairs(scene: &Scene, method: Method) -> Vec<(ColliderHandle, ColliderHandle)> {
+    let dispatcher = judge_dispatcher(method);
+    let mut out = Vec::new();
+    for h in &scene.dynamic {
+        let rb = &scene.world.bodies[*h];
+        if !rb.is_ccd_enabled() {
+            continue;
+        }
+        for c in rb.colliders() {
+            let co1 = &scene.world.colliders[*c];
+            let radius = co1.shape().compute_local_bounding_sphere().radius;
+            for t in &scene.fixed {
+                let co2 = &scene.world.colliders[*t];
+                let gap = APART_GAP * (radius + co2.shape().compute_local_bounding_sphere().radius);
+                let pos12 = co1.position().inv_mul(co2.position());
+                if let Ok(None) = dispatcher.contact(&pos12, co1.shape(), co2.shape(), gap) {
+                    out.push((*c, *t));
+                }
+            }
+        }
+    }
+    out
+}
+
+/// After a step, for the CCD-enabled bodies (the launched ones) rapier's CCD swept in it: the
+/// deepest penetration (m) into a
+/// fixed target of a pair that `apart` holds (apart at the step's start), and the smallest
+/// signed distance from the body's centre of mass to a fixed target's solid, over the body's
+/// `ccd_thickness` (`INFINITY` if none).
+fn after_sweep_checks(scene: &Scene, method: Method, apart: &[(ColliderHandle, ColliderHandle)]) -> (f64, f64) {
+    let dispatcher = judge_dispatcher(method);
+    let (mut deepest, mut clearance) = (0.0f64, f64::INFINITY);
+    for h in &scene.dynamic {
+        let rb = &scene.world.bodies[*h];
+        // The case's launched bodies (CCD on: this crate's shapes with `SmoothDispatcher`), in
+        // the steps rapier's CCD swept them.
+        if !(rb.is_ccd_enabled() && rb.is_ccd_active()) {
+            continue;
+        }
+        let com = rb.center_of_mass();
+        for c in rb.colliders() {
+            let co1 = &scene.world.colliders[*c];
+            for (_, t) in apart.iter().filter(|(b, _)| b == c) {
+                let co2 = &scene.world.colliders[*t];
+                let pos12 = co1.position().inv_mul(co2.position());
+                if let Ok(Some(k)) = dispatcher.contact(&pos12, co1.shape(), co2.shape(), 0.0) {
+                    deepest = deepest.max(-k.dist);
+                }
+            }
+            let thickness = co1.shape().ccd_thickness();
+            for t in &scene.fixed {
+                let co2 = &scene.world.colliders[*t];
+                let p = co2.position().inverse_transform_point(com);
+                let proj = co2.shape().project_local_point(p, true);
+                let d = (p - proj.point).length();
+                let signed = if proj.is_inside { -d } else { d };
+                if thickness > 0.0 {
+                    clearance = clearance.min(signed / thickness);
+                }
+            }
+        }
+    }
+    (deepest, clearance)
 }
 
 /// The largest distance from a dynamic body's centre of mass to its boundary.
@@ -384,6 +489,8 @@ pub struct Tally {
     pub panicked: usize,
     pub deepest: f64,
     pub deepest_rel: f64,
+    pub apart_deepest: f64,
+    pub centre_clearance: f64,
     pub seconds: f64,
     pub steps: usize,
 }
@@ -399,6 +506,13 @@ impl Tally {
         self.panicked += o.panicked.is_some() as usize;
         self.deepest = self.deepest.max(o.deepest);
         self.deepest_rel = self.deepest_rel.max(o.deepest_rel);
+        self.apart_deepest = self.apart_deepest.max(o.apart_deepest);
+        // The first outcome's, then the least.
+        self.centre_clearance = if self.cases == 1 {
+            o.centre_clearance
+        } else {
+            self.centre_clearance.min(o.centre_clearance)
+        };
         self.seconds += o.seconds;
         self.steps += o.steps;
     }
@@ -425,7 +539,7 @@ pub fn table(cases: &[Case], outcomes: &[[Outcome; 2]]) -> String {
     let mut s = String::new();
     let _ = writeln!(
         s,
-        "{:<18} {:<17} {:>5} {:>7} {:>6} {:>6} {:>4} {:>6} {:>9} {:>9} {:>8} {:>6}",
+        "{:<18} {:<17} {:>5} {:>7} {:>6} {:>6} {:>4} {:>6} {:>9} {:>9} {:>9} {:>7} {:>8} {:>6}",
         "family",
         "method",
         "cases",
@@ -436,6 +550,8 @@ pub fn table(cases: &[Case], outcomes: &[[Outcome; 2]]) -> String {
         "panics",
         "deepest m",
         "/ thick",
+        "apart m",
+        "centre",
         "step us",
         "ratio"
     );
@@ -450,7 +566,7 @@ pub fn table(cases: &[Case], outcomes: &[[Outcome; 2]]) -> String {
             };
             let _ = writeln!(
                 s,
-                "{:<18} {:<17} {:>5} {:>7} {:>6} {:>6} {:>4} {:>6} {:>9.2e} {:>9.3} {:>8.1} {:>6}",
+                "{:<18} {:<17} {:>5} {:>7} {:>6} {:>6} {:>4} {:>6} {:>9.2e} {:>9.3} {:>9.2e} {:>7.3} {:>8.1} {:>6}",
                 name,
                 m.name(),
                 t.cases,
@@ -461,6 +577,8 @@ pub fn table(cases: &[Case], outcomes: &[[Outcome; 2]]) -> String {
                 t.panicked,
                 t.deepest,
                 t.deepest_rel,
+                t.apart_deepest,
+                t.centre_clearance,
                 t.step_us(),
                 r
             );
