@@ -60,11 +60,16 @@ const MAX_UNSWEPT: usize = 1;
 /// the centre stays r/8 away (less a rounding allowance).
 const CENTRE_CLEARANCE: f64 = 0.125 - 1e-9;
 
+/// A case as the failures name it: family, body, speed and spin.
+fn describe(c: &Case) -> String {
+    format!("{} {} {} m/s {} rad/s", c.family.name(), c.body.name(), c.speed, c.spin)
+}
+
 /// What went wrong in a case under `SmoothDispatcher` and is never allowed: a body through a
 /// wall, a NaN, a panic, a frozen body outside [`may_freeze`], a swept body's centre within
 /// [`CENTRE_CLEARANCE`] of a fixed target.
 fn failures_of(c: &Case, o: &common::ccd_judge::Outcome) -> Vec<String> {
-    let what = format!("{} {} {} m/s {} rad/s", c.family.name(), c.body.name(), c.speed, c.spin);
+    let what = describe(c);
     let mut failures = Vec::new();
     if o.centre_clearance < CENTRE_CLEARANCE {
         failures.push(format!(
@@ -102,7 +107,7 @@ fn no_body_goes_through_a_wall_nor_freezes_in_the_ccd_scene_suite() {
         .iter()
         .zip(&outcomes)
         .filter(|(_, o)| o[0].frozen.is_some())
-        .map(|(c, _)| format!("{} {} {} m/s {} rad/s", c.family.name(), c.body.name(), c.speed, c.spin))
+        .map(|(c, _)| describe(c))
         .collect();
     println!(
         "SmoothDispatcher: {} frozen (at most {MAX_FROZEN}): {frozen:?}",
@@ -165,16 +170,7 @@ fn unswept_failures<'a>(cases: &[Case], outcomes: impl Iterator<Item = &'a commo
         .iter()
         .zip(outcomes)
         .filter(|(_, o)| o.apart_deepest > APART_TOLERANCE)
-        .map(|(c, o)| {
-            format!(
-                "{} {} {} m/s {} rad/s: {:.3e} m",
-                c.family.name(),
-                c.body.name(),
-                c.speed,
-                c.spin,
-                o.apart_deepest
-            )
-        })
+        .map(|(c, o)| format!("{}: {:.3e} m", describe(c), o.apart_deepest))
         .collect();
     println!(
         "deeper than {APART_TOLERANCE:e} m after a swept step, apart at its start (at most {MAX_UNSWEPT}): {deep:?}"

@@ -446,12 +446,7 @@ fn shape_box(
 /// The deepest penetration, after this step, of a body rapier's CCD swept in it into its
 /// targets (m, and as a fraction of its `ccd_thickness`), by the method's contact query.
 fn deepest_after_sweep(scene: &Scene, method: Method) -> (f64, f64) {
-    let smooth = SmoothDispatcher::default();
-    let parry = DefaultQueryDispatcher;
-    let dispatcher: &dyn QueryDispatcher = match method {
-        Method::Smooth => &smooth,
-        Method::Rapier => &parry,
-    };
+    let dispatcher = judge_dispatcher(method);
     let (mut deepest, mut rel) = (0.0f64, 0.0f64);
     for h in &scene.dynamic {
         let rb = &scene.world.bodies[*h];
