@@ -205,26 +205,32 @@ fn judge_dispatcher(method: Method) -> Box<dyn QueryDispatcher> {
     }
 }
 
+/// The colliders of the scene's dynamic bodies that `keep` accepts, with their body's handle and
+/// the body: the loop of the judge's per-step checks.
+fn body_colliders<'a>(
+    scene: &'a Scene,
+    keep: impl Fn(&RigidBody) -> bool + 'a,
+) -> impl Iterator<Item = (RigidBodyHandle, &'a RigidBody, ColliderHandle, &'a Collider)> + 'a {
+    scene.dynamic.iter().flat_map(move |h| {
+        let rb = &scene.world.bodies[*h];
+        let colliders: &[ColliderHandle] = if keep(rb) { rb.colliders() } else { &[] };
+        colliders.iter().map(move |c| (*h, rb, *c, &scene.world.colliders[*c]))
+    })
+}
+
 /// The pairs (a collider of a CCD-enabled dynamic body, a fixed collider) apart at the step's
 /// start by more than [`APART_GAP`] of the pair's size, by the method's contact query.
 fn apart_pairs(scene: &Scene, method: Method) -> Vec<(ColliderHandle, ColliderHandle)> {
     let dispatcher = judge_dispatcher(method);
     let mut out = Vec::new();
-    for h in &scene.dynamic {
-        let rb = &scene.world.bodies[*h];
-        if !rb.is_ccd_enabled() {
-            continue;
-        }
-        for c in rb.colliders() {
-            let co1 = &scene.world.colliders[*c];
-            let radius = co1.shape().compute_local_bounding_sphere().radius;
-            for t in &scene.fixed {
-                let co2 = &scene.world.colliders[*t];
-                let gap = APART_GAP * (radius + co2.shape().compute_local_bounding_sphere().radius);
-                let pos12 = co1.position().inv_mul(co2.position());
-                if let Ok(None) = dispatcher.contact(&pos12, co1.shape(), co2.shape(), gap) {
-                    out.push((*c, *t));
-                }
+    for (_, _, c, co1) in body_colliders(scene, |rb| rb.is_ccd_enabled()) {
+        let radius = co1.shape().compute_local_bounding_sphere().radius;
+        for t in &scene.fixed {
+            let co2 = &scene.world.colliders[*t];
+            let gap = APART_GAP * (radius + co2.shape().compute_local_bounding_sphere().radius);
+            let pos12 = co1.position().inv_mul(co2.position());
+            if let Ok(None) = dispatcher.contact(&pos12, co1.shape(), co2.shape(), gap) {
+                out.push((c, *t));
             }
         }
     }
@@ -232,40 +238,31 @@ fn apart_pairs(scene: &Scene, method: Method) -> Vec<(ColliderHandle, ColliderHa
 }
 
 /// After a step, for the CCD-enabled bodies (the launched ones) rapier's CCD swept in it: the
-/// deepest penetration (m) into a
-/// fixed target of a pair that `apart` holds (apart at the step's start), and the smallest
-/// signed distance from the body's centre of mass to a fixed target's solid, over the body's
-/// `ccd_thickness` (`INFINITY` if none).
+/// deepest penetration (m) into a fixed target of a pair that `apart` holds (apart at the step's
+/// start), and the smallest signed distance from the body's centre of mass to a fixed target's
+/// solid, over the body's `ccd_thickness` (`INFINITY` if none).
 fn after_sweep_checks(scene: &Scene, method: Method, apart: &[(ColliderHandle, ColliderHandle)]) -> (f64, f64) {
     let dispatcher = judge_dispatcher(method);
     let (mut deepest, mut clearance) = (0.0f64, f64::INFINITY);
-    for h in &scene.dynamic {
-        let rb = &scene.world.bodies[*h];
-        // The case's launched bodies (CCD on: this crate's shapes with `SmoothDispatcher`), in
-        // the steps rapier's CCD swept them.
-        if !(rb.is_ccd_enabled() && rb.is_ccd_active()) {
-            continue;
-        }
-        let com = rb.center_of_mass();
-        for c in rb.colliders() {
-            let co1 = &scene.world.colliders[*c];
-            for (_, t) in apart.iter().filter(|(b, _)| b == c) {
-                let co2 = &scene.world.colliders[*t];
-                let pos12 = co1.position().inv_mul(co2.position());
-                if let Ok(Some(k)) = dispatcher.contact(&pos12, co1.shape(), co2.shape(), 0.0) {
-                    deepest = deepest.max(-k.dist);
-                }
+    // The case's launched bodies (CCD on: this crate's shapes with `SmoothDispatcher`), in the
+    // steps rapier's CCD swept them.
+    for (_, rb, c, co1) in body_colliders(scene, |rb| rb.is_ccd_enabled() && rb.is_ccd_active()) {
+        for (_, t) in apart.iter().filter(|(b, _)| *b == c) {
+            let co2 = &scene.world.colliders[*t];
+            let pos12 = co1.position().inv_mul(co2.position());
+            if let Ok(Some(k)) = dispatcher.contact(&pos12, co1.shape(), co2.shape(), 0.0) {
+                deepest = deepest.max(-k.dist);
             }
-            let thickness = co1.shape().ccd_thickness();
-            for t in &scene.fixed {
-                let co2 = &scene.world.colliders[*t];
-                let p = co2.position().inverse_transform_point(com);
-                let proj = co2.shape().project_local_point(p, true);
-                let d = (p - proj.point).length();
-                let signed = if proj.is_inside { -d } else { d };
-                if thickness > 0.0 {
-                    clearance = clearance.min(signed / thickness);
-                }
+        }
+        let (com, thickness) = (rb.center_of_mass(), co1.shape().ccd_thickness());
+        for t in &scene.fixed {
+            let co2 = &scene.world.colliders[*t];
+            let p = co2.position().inverse_transform_point(com);
+            let proj = co2.shape().project_local_point(p, true);
+            let d = (p - proj.point).length();
+            let signed = if proj.is_inside { -d } else { d };
+            if thickness > 0.0 {
+                clearance = clearance.min(signed / thickness);
             }
         }
     }
@@ -448,23 +445,16 @@ fn shape_box(
 fn deepest_after_sweep(scene: &Scene, method: Method) -> (f64, f64) {
     let dispatcher = judge_dispatcher(method);
     let (mut deepest, mut rel) = (0.0f64, 0.0f64);
-    for h in &scene.dynamic {
-        let rb = &scene.world.bodies[*h];
-        if !rb.is_ccd_active() {
-            continue;
-        }
-        for c in rb.colliders() {
-            let co1 = &scene.world.colliders[*c];
-            let thickness = co1.shape().ccd_thickness();
-            for t in targets(scene, *h) {
-                let co2 = &scene.world.colliders[t.collider];
-                let pos12 = co1.position().inv_mul(co2.position());
-                if let Ok(Some(k)) = dispatcher.contact(&pos12, co1.shape(), co2.shape(), 0.0) {
-                    if k.dist < 0.0 {
-                        deepest = deepest.max(-k.dist);
-                        if thickness > 0.0 {
-                            rel = rel.max(-k.dist / thickness);
-                        }
+    for (h, _, _, co1) in body_colliders(scene, |rb| rb.is_ccd_active()) {
+        let thickness = co1.shape().ccd_thickness();
+        for t in targets(scene, h) {
+            let co2 = &scene.world.colliders[t.collider];
+            let pos12 = co1.position().inv_mul(co2.position());
+            if let Ok(Some(k)) = dispatcher.contact(&pos12, co1.shape(), co2.shape(), 0.0) {
+                if k.dist < 0.0 {
+                    deepest = deepest.max(-k.dist);
+                    if thickness > 0.0 {
+                        rel = rel.max(-k.dist / thickness);
                     }
                 }
             }
