@@ -39,7 +39,8 @@ pub(crate) struct NonlinearCast<'a> {
     pub t1: Real,
     pub stop: bool,
     /// Rule 3 of `rapier_rule` on the full motions, rotation included
-    /// ([`crate::CastPolicy::RapierConstantSpin`]); false from [`NonlinearCast::new`].
+    /// ([`crate::CastPolicy::RapierConstantSpin`] where both bodies move); false from
+    /// [`NonlinearCast::new`].
     pub spin_at_start: bool,
     /// The shapes' local bounding spheres, read once a cast (the size, the reach and the
     /// tolerances of every rule take them).
@@ -651,6 +652,15 @@ fn plain(opts: &ToiOptions) -> ToiOptions {
         path: crate::MotionPath::ConstantSpin,
         ..*opts
     }
+}
+
+/// Whether rule 3 of `rapier_rule` measures the deepening at a start contact on the whole
+/// motions ([`NonlinearCast::spin_at_start`]): under [`crate::CastPolicy::RapierConstantSpin`],
+/// where both bodies move; against a body standing still (no velocity, no spin), on the
+/// translation, as under [`crate::CastPolicy::Rapier`] (`rapier_rule`'s module docs).
+pub(crate) fn spin_at_start(policy: crate::CastPolicy, m1: &NonlinearRigidMotion, m2: &NonlinearRigidMotion) -> bool {
+    let still = |m: &NonlinearRigidMotion| m.linvel == Vector::ZERO && m.angvel == 0.0;
+    policy == crate::CastPolicy::RapierConstantSpin && !still(m1) && !still(m2)
 }
 
 /// Shape 2's pose in shape 1's frame at time `t`.

@@ -66,7 +66,7 @@
 //! input are its own.
 //!
 //! Under [`CastPolicy::RapierConstantSpin`] (the moving-pairs pass) rule 3 measures the
-//! deepening on the whole motions, rotation included; a disc turning about its centre deepens a
+//! deepening on the whole motions where both bodies move, rotation included; a disc turning about its centre deepens a
 //! contact exactly as its translation does, so the same closed form answers it.
 
 use super::cast::{is_window, toi_to_parry, NonlinearCast};
