@@ -41,7 +41,7 @@ use common::ccd_scenes::{all_cases, Body, Case, Family, Method};
 /// measures a contact of two moving bodies at the step's start on their whole motions
 /// (`CastPolicy::RapierConstantSpin`), and stops both at the step's start when those take the
 /// contact deeper by the allowance; where the solver leaves that approach in place, the two
-/// stay there (docs/rapier.md, "The CCD scene suite with the pass").
+/// stay there (docs/rapier.md, "The CCD scene suite", with the pass).
 fn may_freeze(c: &Case) -> bool {
     (c.recycling && c.family == Family::Wedge && c.body == Body::Sliver && c.speed >= 1000.0)
         || (c.moving_pairs && c.family == Family::BulletsStack && c.speed >= 1000.0)

@@ -654,15 +654,6 @@ fn plain(opts: &ToiOptions) -> ToiOptions {
     }
 }
 
-/// Whether rule 3 of `rapier_rule` measures the deepening at a start contact on the whole
-/// motions ([`NonlinearCast::spin_at_start`]): under [`crate::CastPolicy::RapierConstantSpin`],
-/// where both bodies move; against a body standing still (no velocity, no spin), on the
-/// translation, as under [`crate::CastPolicy::Rapier`] (`rapier_rule`'s module docs).
-pub(crate) fn spin_at_start(policy: crate::CastPolicy, m1: &NonlinearRigidMotion, m2: &NonlinearRigidMotion) -> bool {
-    let still = |m: &NonlinearRigidMotion| m.linvel == Vector::ZERO && m.angvel == 0.0;
-    policy == crate::CastPolicy::RapierConstantSpin && !still(m1) && !still(m2)
-}
-
 /// Shape 2's pose in shape 1's frame at time `t`.
 pub(crate) fn pos12_at(m1: &NonlinearRigidMotion, m2: &NonlinearRigidMotion, t: Real) -> Pose {
     // From the pair's relative motion, as the trackers place it: the world poses of two bodies

@@ -134,6 +134,15 @@ impl CastPolicy {
     pub const CORE: Real = 0.25;
 }
 
+/// Whether rule 3 measures the deepening at a start contact on the whole motions
+/// ([`NonlinearCast::spin_at_start`]): under [`CastPolicy::RapierConstantSpin`], where both
+/// bodies move; against a body standing still (no velocity, no spin), on the translation, as
+/// under [`CastPolicy::Rapier`] (module docs).
+pub(crate) fn spin_at_start(policy: CastPolicy, m1: &NonlinearRigidMotion, m2: &NonlinearRigidMotion) -> bool {
+    let still = |m: &NonlinearRigidMotion| m.linvel == Vector::ZERO && m.angvel == 0.0;
+    policy == CastPolicy::RapierConstantSpin && !still(m1) && !still(m2)
+}
+
 /// The fast body of a cast: shape, motion, and the other shape and motion.
 struct Fast<'a> {
     g: &'a dyn Shape,

@@ -176,7 +176,7 @@ fn disc_casts_answer_as_the_general_path() {
             let d = SmoothDispatcher::default().with_cast_policy(k.policy);
             let mut c = NonlinearCast::new(&k.m1, &k.disc, &k.m2, &*target, k.window, k.stop);
             // As `cast_shapes_nonlinear` sets it.
-            c.spin_at_start = crate::dispatcher::cast::spin_at_start(k.policy, &k.m1, &k.m2);
+            c.spin_at_start = crate::dispatcher::rapier_rule::spin_at_start(k.policy, &k.m1, &k.m2);
             let (opts, rule) = d.cast_setup(&c);
             let Some(fast) = disc_cast(&c, &opts, rule.start_contact) else {
                 tally.general += 1;
