@@ -136,10 +136,11 @@ impl CastPolicy {
 
 /// Whether rule 3 measures the deepening at a start contact on the whole motions
 /// ([`NonlinearCast::spin_at_start`]): under [`CastPolicy::RapierConstantSpin`], where both
-/// bodies move; against a body standing still (no velocity, no spin), on the translation, as
-/// under [`CastPolicy::Rapier`] (module docs).
+/// bodies move; against a body standing still over the window (no velocity, no spin: a fixed
+/// wall, a body at rest, or a body the moving-pairs pass has stopped earlier in the step and
+/// casts again from its stop), on the translation, as under [`CastPolicy::Rapier`] (module
+/// docs): for that cast the still body is a wall.
 pub(crate) fn spin_at_start(policy: CastPolicy, m1: &NonlinearRigidMotion, m2: &NonlinearRigidMotion) -> bool {
-    let still = |m: &NonlinearRigidMotion| m.linvel == Vector::ZERO && m.angvel == 0.0;
     policy == CastPolicy::RapierConstantSpin && !still(m1) && !still(m2)
 }
 
@@ -441,4 +442,25 @@ pub(crate) fn hit_at(c: &NonlinearCast, t: Real, d0: Real) -> Result<TimeOfImpac
         normal2: pos12.rotation.inverse() * -normal1,
         cost: Default::default(),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn only_two_moving_bodies_take_the_whole_motions_under_the_moving_pairs_policy() {
+        let pose = Pose::translation(1.0, 2.0);
+        let moving = NonlinearRigidMotion::new(pose, Vector::ZERO, Vector::new(1.0, 0.0), 0.0);
+        let spinning = NonlinearRigidMotion::new(pose, Vector::ZERO, Vector::ZERO, 3.0);
+        let still = NonlinearRigidMotion::constant_position(pose);
+        let pass = CastPolicy::RapierConstantSpin;
+        assert!(spin_at_start(pass, &moving, &spinning));
+        assert!(spin_at_start(pass, &spinning, &moving));
+        assert!(!spin_at_start(pass, &spinning, &still));
+        assert!(!spin_at_start(pass, &still, &moving));
+        for other in [CastPolicy::Rapier, CastPolicy::Plain] {
+            assert!(!spin_at_start(other, &moving, &spinning));
+        }
+    }
 }

@@ -481,6 +481,9 @@ fn a_disc_centred_on_a_boxs_corner_edge_or_centre_answers_as_the_general_path() 
                 for policy in [CastPolicy::Rapier, CastPolicy::RapierConstantSpin] {
                     let d = SmoothDispatcher::default().with_cast_policy(policy);
                     let mut c = NonlinearCast::new(&m1, &disc, &m2, target, (0.0, 1.0), false);
+                    // Forced for both policies' branches (the dispatcher sets it only for two
+                    // moving bodies; the target here stands still): the closed form and the
+                    // general path must agree on the whole-motion rule too.
                     c.spin_at_start = policy == CastPolicy::RapierConstantSpin;
                     let (opts, rule) = d.cast_setup(&c);
                     let fast = disc_cast(&c, &opts, rule.start_contact).expect("the closed form takes it");
