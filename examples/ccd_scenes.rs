@@ -16,7 +16,9 @@
 //! and `--ccd-hooks` to give the launched CCD bodies' colliders
 //! `ActiveHooks::MODIFY_SOLVER_CONTACTS` with no-op hooks, so that rapier never recycles their
 //! pairs, and `--rotation-cap-kept` to give `allow_fast_rotation` only to the cases whose spin is
-//! above rapier's rotation cap, π/4 a step, not to every case above one of its caps).
+//! above rapier's rotation cap, π/4 a step, not to every case above one of its caps, and
+//! `--moving-pairs` to run `SmoothDispatcher`'s steps with this crate's pass for two moving
+//! bodies, `MovingPairs`, with its default options).
 
 #[path = "common/mod.rs"]
 mod common;
@@ -37,6 +39,8 @@ fn main() {
     let ccd_hooks = args.iter().any(|a| a == "--ccd-hooks");
     // `--rotation-cap-kept`: `allow_fast_rotation` only on the cases whose spin is above π/4 a step.
     let rotation_cap_kept = args.iter().any(|a| a == "--rotation-cap-kept");
+    // `--moving-pairs`: this crate's pass `MovingPairs` around `SmoothDispatcher`'s steps.
+    let moving_pairs = args.iter().any(|a| a == "--moving-pairs");
     let filter = args.iter().find(|a| !a.starts_with("--"));
     let cases: Vec<_> = all_cases()
         .into_iter()
@@ -46,13 +50,14 @@ fn main() {
             recycle_distance,
             ccd_hooks,
             rotation_cap_kept,
+            moving_pairs,
             ..c
         })
         .collect();
     let t = std::time::Instant::now();
     let outcomes = run_all(&cases);
     println!(
-        "CCD scene suite: {} cases, dt = 1/60 s; rapier's caps lifted in {} of them (speed > 400 m/s or spin > 47 rad/s){}; contact recycling {}{}",
+        "CCD scene suite: {} cases, dt = 1/60 s; rapier's caps lifted in {} of them (speed > 400 m/s or spin > 47 rad/s){}; contact recycling {}{}{}",
         cases.len(),
         cases.iter().filter(|c| c.lifted()).count(),
         if rotation_cap_kept {
@@ -67,6 +72,11 @@ fn main() {
         },
         if ccd_hooks {
             "; the CCD bodies' colliders with active hooks (their pairs never recycled)"
+        } else {
+            ""
+        },
+        if moving_pairs {
+            "; SmoothDispatcher's steps with the pass MovingPairs (default options)"
         } else {
             ""
         }

@@ -16,8 +16,10 @@
 //! after every step in which rapier's CCD swept a body: its centre of mass at least an eighth of
 //! its `ccd_thickness` from every fixed target (the start-contact rule's core), and no more than
 //! [`MAX_UNSWEPT`] cases in which it ended deeper than [`APART_TOLERANCE`] in a fixed target it
-//! was apart from at the step's start (a target rapier never casts against). The table it
-//! prints has those two figures and the deepest penetration after a swept step.
+//! was apart from at the step's start (a target rapier never casts against). With the pass
+//! `MovingPairs` around the steps: no case at all deeper than [`APART_TOLERANCE`] from apart,
+//! and at most one more frozen case (a bullet lodged in the stack). The table it prints has
+//! those two figures and the deepest penetration after a swept step.
 
 mod common;
 
@@ -33,12 +35,24 @@ use common::ccd_scenes::{all_cases, Body, Case, Family, Method};
 /// the pair is recomputed only after about ten steps (docs/rapier.md, "What is left"). At most
 /// [`MAX_FROZEN`] such cases; none of any other body, family or speed, and none with contact
 /// recycling off.
+///
+/// With the pass `MovingPairs` around the steps ([`Case::moving_pairs`]), one more class: a
+/// bullet at 1000 m/s or more shot into the stack, lodged between moving boxes. The pass
+/// measures a contact of two moving bodies at the step's start on their whole motions
+/// (`CastPolicy::RapierConstantSpin`), and stops both at the step's start when those take the
+/// contact deeper by the allowance; where the solver leaves that approach in place, the two
+/// stay there (docs/rapier.md, "The CCD scene suite", with the pass).
 fn may_freeze(c: &Case) -> bool {
-    c.recycling && c.family == Family::Wedge && c.body == Body::Sliver && c.speed >= 1000.0
+    (c.recycling && c.family == Family::Wedge && c.body == Body::Sliver && c.speed >= 1000.0)
+        || (c.moving_pairs && c.family == Family::BulletsStack && c.speed >= 1000.0)
 }
 
 /// The most cases of the [`may_freeze`] class that may freeze.
 const MAX_FROZEN: usize = 1;
+
+/// The most cases of [`may_freeze`]'s class with the pass `MovingPairs` (a bullet lodged in the
+/// stack) that may freeze, besides [`MAX_FROZEN`] of the wedge's.
+const MAX_FROZEN_WITH_PASS: usize = 1;
 
 /// The deepest a CCD-swept body may be, at a step's end, in a fixed target it was apart from
 /// at the step's start (m): rapier's CCD stops it where it touches, which the dispatcher's
@@ -162,20 +176,79 @@ fn no_body_freezes_when_only_the_spinning_bodies_lift_the_rotation_cap() {
     no_body_through_nor_frozen(cases.collect(), "rotation cap kept below it");
 }
 
+/// This crate's pass for two moving bodies, `MovingPairs` with its default options, around
+/// every step of `SmoothDispatcher`'s run, rapier's contact recycling on: no body through a wall,
+/// no NaN, no panic, every swept body's centre at least an eighth of its thickness off every
+/// fixed target, and **no** case in which a swept body ended a step deeper than
+/// [`APART_TOLERANCE`] in a fixed target it was apart from at the step's start — the pass sweeps
+/// a body turning past rapier's regime (π/4 a step) against every fixed collider its swept box
+/// meets, the target rapier's candidate search misses ([`MAX_UNSWEPT`]) among them. Frozen: at
+/// most [`MAX_FROZEN`] cases in the wedge and [`MAX_FROZEN_WITH_PASS`] in the stack, the classes
+/// [`may_freeze`] names (`cargo run --release
+/// --example ccd_scenes --moving-pairs` prints the table of both methods, rapier's default
+/// without the pass).
+#[test]
+fn with_the_moving_pairs_pass_no_swept_body_ends_deep_in_a_target_it_was_apart_from() {
+    let cases: Vec<Case> = all_cases()
+        .into_iter()
+        .map(|c| Case {
+            moving_pairs: true,
+            ..c
+        })
+        .collect();
+    let outcomes: Vec<_> = cases.iter().map(|c| run_case(c, Method::Smooth)).collect();
+    let mut failures: Vec<String> = cases
+        .iter()
+        .zip(&outcomes)
+        .flat_map(|(c, o)| failures_of(c, o))
+        .collect();
+    let frozen: Vec<&Case> = cases
+        .iter()
+        .zip(&outcomes)
+        .filter(|(_, o)| o.frozen.is_some())
+        .map(|(c, _)| c)
+        .collect();
+    let stack = frozen.iter().filter(|c| c.family == Family::BulletsStack).count();
+    println!(
+        "with MovingPairs: {} cases, {} frozen (at most {MAX_FROZEN} in the wedge, {MAX_FROZEN_WITH_PASS} in the stack): {:?}",
+        cases.len(),
+        frozen.len(),
+        frozen.iter().map(|c| describe(c)).collect::<Vec<_>>()
+    );
+    if stack > MAX_FROZEN_WITH_PASS || frozen.len() - stack > MAX_FROZEN {
+        failures.push(format!("{} frozen cases, {stack} of them in the stack", frozen.len()));
+    }
+    failures.extend(deep_from_apart(&cases, outcomes.iter(), 0));
+    assert!(
+        failures.is_empty(),
+        "{} failures:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
+}
+
 /// The cases whose swept bodies ended a step deeper than [`APART_TOLERANCE`] in a fixed target
 /// they started the step apart from (printed), as a failure when there are more than
 /// [`MAX_UNSWEPT`].
 fn unswept_failures<'a>(cases: &[Case], outcomes: impl Iterator<Item = &'a common::ccd_judge::Outcome>) -> Vec<String> {
+    deep_from_apart(cases, outcomes, MAX_UNSWEPT)
+}
+
+/// The cases whose swept bodies ended a step deeper than [`APART_TOLERANCE`] in a fixed target
+/// they started the step apart from (printed), as a failure when there are more than `most`.
+fn deep_from_apart<'a>(
+    cases: &[Case],
+    outcomes: impl Iterator<Item = &'a common::ccd_judge::Outcome>,
+    most: usize,
+) -> Vec<String> {
     let deep: Vec<String> = cases
         .iter()
         .zip(outcomes)
         .filter(|(_, o)| o.apart_deepest > APART_TOLERANCE)
         .map(|(c, o)| format!("{}: {:.3e} m", describe(c), o.apart_deepest))
         .collect();
-    println!(
-        "deeper than {APART_TOLERANCE:e} m after a swept step, apart at its start (at most {MAX_UNSWEPT}): {deep:?}"
-    );
-    if deep.len() > MAX_UNSWEPT {
+    println!("deeper than {APART_TOLERANCE:e} m after a swept step, apart at its start (at most {most}): {deep:?}");
+    if deep.len() > most {
         vec![format!(
             "{} cases deeper than {APART_TOLERANCE:e} m from apart: {deep:?}",
             deep.len()

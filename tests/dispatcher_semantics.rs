@@ -435,6 +435,49 @@ fn a_spinning_start_contact_is_left_to_the_solver() {
     }
 }
 
+/// The moving-pairs pass's policy (`CastPolicy::RapierConstantSpin`) at a start contact: against
+/// a body standing still (a wall) the deepening is the translation's, as rapier's own rule
+/// measures it, so the spin that digs the ellipse into the wall is left to the solver; between
+/// two moving bodies it is the whole motions', spin included, so the same contact with the wall
+/// drifting at 1 mm/s along its face is stopped where the spin has taken it the allowance deeper.
+#[test]
+fn the_moving_pairs_policy_takes_the_whole_motions_only_between_two_moving_bodies() {
+    let d = SmoothDispatcher::default().with_cast_policy(CastPolicy::RapierConstantSpin);
+    let e = Ellipse::new(0.5, 0.2);
+    let wall = Cuboid::new(Vector::new(0.025, 3.0));
+    let dt = 1.0 / 60.0;
+    let m1 = NonlinearRigidMotion::new(
+        Pose::new(Vector::ZERO, std::f64::consts::FRAC_PI_2),
+        Vector::ZERO,
+        Vector::new(0.1, 0.0),
+        40.0,
+    );
+    // Face at x = 0.199: 10⁻³ into the ellipse, which its spin takes 0.14 deeper in the step.
+    let still = NonlinearRigidMotion::constant_position(Pose::translation(0.224, 0.0));
+    let d_end = signed_at(&d, &m1, &e, &still, &wall, dt);
+    assert!(d_end < -0.14, "{d_end}");
+    assert!(d
+        .cast_shapes_nonlinear(&m1, &e, &still, &wall, 0.0, dt, false)
+        .unwrap()
+        .is_none());
+    let drifting = NonlinearRigidMotion {
+        linvel: Vector::new(0.0, 1e-3),
+        ..still
+    };
+    let hit = d
+        .cast_shapes_nonlinear(&m1, &e, &drifting, &wall, 0.0, dt, false)
+        .unwrap()
+        .expect("the whole motions take the contact deeper");
+    // Where the whole motions have taken it the allowance deeper: a quarter of the ellipse's
+    // inradius (0.2) below the start's 10⁻³.
+    let at_hit = signed_at(&d, &m1, &e, &drifting, &wall, hit.time_of_impact);
+    assert!(
+        hit.time_of_impact < dt && (at_hit + 1e-3 + 0.05).abs() < 1e-6,
+        "{} {at_hit}",
+        hit.time_of_impact
+    );
+}
+
 /// A rounded square 10⁻³ into a thin wall at 100 m/s (neither side strictly convex: the gap
 /// tracker): parry answers the approaching contact with `time_of_impact = 0`, which rapier
 /// discards (the square would pass the wall); the dispatcher reports it where the translation

@@ -39,7 +39,8 @@ pub(crate) struct NonlinearCast<'a> {
     pub t1: Real,
     pub stop: bool,
     /// Rule 3 of `rapier_rule` on the full motions, rotation included
-    /// ([`crate::CastPolicy::RapierConstantSpin`]); false from [`NonlinearCast::new`].
+    /// ([`crate::CastPolicy::RapierConstantSpin`] where both bodies move); false from
+    /// [`NonlinearCast::new`].
     pub spin_at_start: bool,
     /// The shapes' local bounding spheres, read once a cast (the size, the reach and the
     /// tolerances of every rule take them).

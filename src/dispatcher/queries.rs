@@ -287,7 +287,7 @@ impl QueryDispatcher for SmoothDispatcher {
         stop_at_penetration: bool,
     ) -> Result<Option<ShapeCastHit>, Unsupported> {
         let mut cast = NonlinearCast::new(motion1, g1, motion2, g2, (start_time, end_time), stop_at_penetration);
-        cast.spin_at_start = self.cast_policy == super::CastPolicy::RapierConstantSpin;
+        cast.spin_at_start = super::rapier_rule::spin_at_start(self.cast_policy, motion1, motion2);
         self.nonlinear_cast(&cast)
     }
 }

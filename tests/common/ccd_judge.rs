@@ -22,7 +22,8 @@
 //! * **centre**: after such a step of a launched body, the least signed distance from its centre of mass to
 //!   a fixed target's solid, as a fraction of its `ccd_thickness` (what the start-contact rule's
 //!   core keeps: at least an eighth with `SmoothDispatcher`);
-//! * the time of each `PhysicsPipeline::step`.
+//! * the time of each `PhysicsPipeline::step` (with the pass `MovingPairs` around it when the
+//!   case asks for it, [`Case::moving_pairs`]).
 #![allow(dead_code)]
 
 use super::ccd_scenes::{build, drive, Case, Family, Method, Scene, DT};
@@ -31,7 +32,7 @@ use parry2d_f64::query::sweep_toi::Sweep;
 use parry2d_f64::query::{DefaultQueryDispatcher, QueryDispatcher, Ray};
 use parry2d_f64::shape::{Shape, TypedShape};
 use rapier2d_f64::prelude::*;
-use smooth_ccd2d::SmoothDispatcher;
+use smooth_ccd2d::{MovingPairs, SmoothDispatcher};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::time::Instant;
 
@@ -118,6 +119,8 @@ fn run_inner(case: &Case, method: Method) -> Outcome {
         ..Outcome::default()
     };
     let mut still = vec![0usize; scene.dynamic.len()];
+    // This crate's pass for two moving bodies around each step, when the case asks for it.
+    let mut pass = (case.moving_pairs && method == Method::Smooth).then(MovingPairs::default);
     let radii: Vec<f64> = scene.dynamic.iter().map(|h| body_radius(&scene, *h, case)).collect();
     for step in 0..scene.steps {
         drive(&mut scene, step);
@@ -140,7 +143,14 @@ fn run_inner(case: &Case, method: Method) -> Outcome {
             .collect();
         let apart = apart_pairs(&scene, method);
         let t = Instant::now();
+        if let Some(p) = pass.as_mut() {
+            p.before_step(&scene.world.bodies);
+        }
         scene.world.step(scene.gravity, &());
+        if let Some(p) = pass.as_mut() {
+            let w = &mut scene.world;
+            p.after_step(&w.params, &mut w.bodies, &mut w.colliders, &(), &());
+        }
         out.seconds += t.elapsed().as_secs_f64();
         out.steps += 1;
         if let Some(k) = first_non_finite(&scene) {

@@ -294,6 +294,11 @@ pub struct Case {
     /// launched with a slow spin keeps rapier's rotation cap, whatever spin its collisions
     /// give it (`--rotation-cap-kept` of the example). By default (false) it is lifted too.
     pub rotation_cap_kept: bool,
+    /// This crate's pass for two moving bodies, `MovingPairs` (default options: bullets, and
+    /// fixed targets of the bodies turning past rapier's regime), around every step of
+    /// `SmoothDispatcher`'s run (`--moving-pairs` of the example; docs/rapier.md, "Two moving
+    /// bodies"). rapier's default runs as it is.
+    pub moving_pairs: bool,
 }
 
 impl Case {
@@ -321,6 +326,7 @@ pub fn all_cases() -> Vec<Case> {
                         recycle_distance: None,
                         ccd_hooks: false,
                         rotation_cap_kept: false,
+                        moving_pairs: false,
                     });
                 }
             }

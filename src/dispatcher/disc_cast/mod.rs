@@ -66,8 +66,9 @@
 //! input are its own.
 //!
 //! Under [`CastPolicy::RapierConstantSpin`] (the moving-pairs pass) rule 3 measures the
-//! deepening on the whole motions, rotation included; a disc turning about its centre deepens a
-//! contact exactly as its translation does, so the same closed form answers it.
+//! deepening on the whole motions where both bodies move, rotation included; a disc turning
+//! about its centre deepens a contact exactly as its translation does, so the same closed form
+//! answers it.
 
 use super::cast::{is_window, toi_to_parry, NonlinearCast};
 use super::rapier_rule::{core_level, in_contact};

@@ -176,7 +176,7 @@ fn disc_casts_answer_as_the_general_path() {
             let d = SmoothDispatcher::default().with_cast_policy(k.policy);
             let mut c = NonlinearCast::new(&k.m1, &k.disc, &k.m2, &*target, k.window, k.stop);
             // As `cast_shapes_nonlinear` sets it.
-            c.spin_at_start = k.policy == CastPolicy::RapierConstantSpin;
+            c.spin_at_start = crate::dispatcher::rapier_rule::spin_at_start(k.policy, &k.m1, &k.m2);
             let (opts, rule) = d.cast_setup(&c);
             let Some(fast) = disc_cast(&c, &opts, rule.start_contact) else {
                 tally.general += 1;
@@ -481,6 +481,9 @@ fn a_disc_centred_on_a_boxs_corner_edge_or_centre_answers_as_the_general_path() 
                 for policy in [CastPolicy::Rapier, CastPolicy::RapierConstantSpin] {
                     let d = SmoothDispatcher::default().with_cast_policy(policy);
                     let mut c = NonlinearCast::new(&m1, &disc, &m2, target, (0.0, 1.0), false);
+                    // Forced for both policies' branches (the dispatcher sets it only for two
+                    // moving bodies; the target here stands still): the closed form and the
+                    // general path must agree on the whole-motion rule too.
                     c.spin_at_start = policy == CastPolicy::RapierConstantSpin;
                     let (opts, rule) = d.cast_setup(&c);
                     let fast = disc_cast(&c, &opts, rule.start_contact).expect("the closed form takes it");
