@@ -389,20 +389,30 @@ fn signed_at(
 /// the drift (0.0017 over the step) is far below the allowance (a quarter of the ellipse's
 /// inradius 0.2) and the core (0.05 about the centre, 0.199 from the face) stays out, so no hit.
 /// A plain cast reports the approaching contact at the start.
-#[test]
-fn a_spinning_start_contact_is_left_to_the_solver() {
-    let d = SmoothDispatcher::default();
-    let e = Ellipse::new(0.5, 0.2);
-    let wall = Cuboid::new(Vector::new(0.025, 3.0));
-    let dt = 1.0 / 60.0;
+/// An ellipse 0.5 × 0.2 standing on end, drifting at 0.1 m/s into a 0.05 wall and spinning at
+/// 40 rad/s, the wall's face at x = 0.199, 10⁻³ into the ellipse (which the spin takes 0.14
+/// deeper within the step): the ellipse, its motion, the wall, the wall's (still) motion, the step.
+fn spinning_ellipse_at_a_wall() -> (Ellipse, NonlinearRigidMotion, Cuboid, NonlinearRigidMotion, f64) {
     let m1 = NonlinearRigidMotion::new(
         Pose::new(Vector::ZERO, std::f64::consts::FRAC_PI_2),
         Vector::ZERO,
         Vector::new(0.1, 0.0),
         40.0,
     );
-    // Face at x = 0.199.
-    let m2 = NonlinearRigidMotion::constant_position(Pose::translation(0.224, 0.0));
+    let wall = NonlinearRigidMotion::constant_position(Pose::translation(0.224, 0.0));
+    (
+        Ellipse::new(0.5, 0.2),
+        m1,
+        Cuboid::new(Vector::new(0.025, 3.0)),
+        wall,
+        1.0 / 60.0,
+    )
+}
+
+#[test]
+fn a_spinning_start_contact_is_left_to_the_solver() {
+    let d = SmoothDispatcher::default();
+    let (e, m1, wall, m2, dt) = spinning_ellipse_at_a_wall();
     let d0 = signed_at(&d, &m1, &e, &m2, &wall, 0.0);
     let d_end = signed_at(&d, &m1, &e, &m2, &wall, dt);
     assert!((d0 + 1e-3).abs() < 1e-12 && d_end < -0.14, "{d0} {d_end}");
@@ -443,17 +453,7 @@ fn a_spinning_start_contact_is_left_to_the_solver() {
 #[test]
 fn the_moving_pairs_policy_takes_the_whole_motions_only_between_two_moving_bodies() {
     let d = SmoothDispatcher::default().with_cast_policy(CastPolicy::RapierConstantSpin);
-    let e = Ellipse::new(0.5, 0.2);
-    let wall = Cuboid::new(Vector::new(0.025, 3.0));
-    let dt = 1.0 / 60.0;
-    let m1 = NonlinearRigidMotion::new(
-        Pose::new(Vector::ZERO, std::f64::consts::FRAC_PI_2),
-        Vector::ZERO,
-        Vector::new(0.1, 0.0),
-        40.0,
-    );
-    // Face at x = 0.199: 10⁻³ into the ellipse, which its spin takes 0.14 deeper in the step.
-    let still = NonlinearRigidMotion::constant_position(Pose::translation(0.224, 0.0));
+    let (e, m1, wall, still, dt) = spinning_ellipse_at_a_wall();
     let d_end = signed_at(&d, &m1, &e, &still, &wall, dt);
     assert!(d_end < -0.14, "{d_end}");
     assert!(d
