@@ -40,8 +40,9 @@ use common::ccd_scenes::{all_cases, Body, Case, Family, Method};
 /// bullet at 1000 m/s or more shot into the stack, lodged between moving boxes. The pass
 /// measures a contact of two moving bodies at the step's start on their whole motions
 /// (`CastPolicy::RapierConstantSpin`), and stops both at the step's start when those take the
-/// contact deeper by the allowance; where the solver leaves that approach in place, the two
-/// stay there (docs/rapier.md, "The CCD scene suite", with the pass).
+/// contact deeper by the allowance or the bullet's core deeper than its depth limit (already
+/// past it there); where the solver leaves that approach in place, the two stay there
+/// (docs/rapier.md, "Two moving bodies", where it is not exact).
 fn may_freeze(c: &Case) -> bool {
     (c.recycling && c.family == Family::Wedge && c.body == Body::Sliver && c.speed >= 1000.0)
         || (c.moving_pairs && c.family == Family::BulletsStack && c.speed >= 1000.0)
