@@ -382,13 +382,6 @@ fn signed_at(
     d.contact(&pos12, g1, g2, 10.0).unwrap().expect("within 10").dist
 }
 
-/// An ellipse standing on its flank 10⁻³ deep in a thin wall, drifting at 0.1 m/s towards it
-/// and spinning at 40 rad/s: within the step the tip turns 0.15 into the wall. rapier's rule
-/// leaves what a spin does to a start contact to the solver (the contact manifold's core
-/// contact), since rapier's clamp would turn the body along another path than its solver's:
-/// the drift (0.0017 over the step) is far below the allowance (a quarter of the ellipse's
-/// inradius 0.2) and the core (0.05 about the centre, 0.199 from the face) stays out, so no hit.
-/// A plain cast reports the approaching contact at the start.
 /// An ellipse 0.5 × 0.2 standing on end, drifting at 0.1 m/s into a 0.05 wall and spinning at
 /// 40 rad/s, the wall's face at x = 0.199, 10⁻³ into the ellipse (which the spin takes 0.14
 /// deeper within the step): the ellipse, its motion, the wall, the wall's (still) motion, the step.
@@ -409,6 +402,13 @@ fn spinning_ellipse_at_a_wall() -> (Ellipse, NonlinearRigidMotion, Cuboid, Nonli
     )
 }
 
+/// An ellipse standing on its flank 10⁻³ deep in a thin wall, drifting at 0.1 m/s towards it
+/// and spinning at 40 rad/s: within the step the tip turns 0.15 into the wall. rapier's rule
+/// leaves what a spin does to a start contact to the solver (the contact manifold's core
+/// contact), since rapier's clamp would turn the body along another path than its solver's:
+/// the drift (0.0017 over the step) is far below the allowance (a quarter of the ellipse's
+/// inradius 0.2) and the core (0.05 about the centre, 0.199 from the face) stays out, so no hit.
+/// A plain cast reports the approaching contact at the start.
 #[test]
 fn a_spinning_start_contact_is_left_to_the_solver() {
     let d = SmoothDispatcher::default();
