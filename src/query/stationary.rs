@@ -310,7 +310,27 @@ pub(crate) fn stationary_in_frame<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Siz
             return Ok(finish(&sv, phi, &j, DistanceStatus::Penetrating));
         }
     }
-    // Global branch and bound over θ, the angle of N in object2's frame.
+    let (best, status) = global_search(&mut sv, local, size, options)?;
+    let (phi, j) = polish_on_flat(&mut sv, best, size, options);
+    let status = if j.fwd > 0.0 && status != DistanceStatus::OutOfIterations {
+        DistanceStatus::Separated
+    } else {
+        status
+    };
+    Ok(finish(&sv, phi, &j, status))
+}
+
+/// The global branch and bound of [`stationary_in_frame`] over θ, the angle of N in object2's
+/// frame, from the local maximum `local` when there is one (module docs): the largest F found
+/// and the status the search ended with (`Penetrating` unless it ran out of evaluations or of
+/// its stack).
+fn global_search<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized>(
+    sv: &mut Solver<A, B>,
+    local: Option<(f64, PairPoint)>,
+    size: f64,
+    options: &DistanceOptions,
+) -> Result<((f64, PairPoint), DistanceStatus), QueryError> {
+    let (obj1, obj2, frame) = (sv.obj1, sv.obj2, sv.frame);
     // The node at θ whose normal on object1 is n1. On a flat piece, S at its end gives F's slope
     // from the right (failing that, the slope from the left is a valid bound too: F has a
     // concave kink there).
@@ -344,7 +364,7 @@ pub(crate) fn stationary_in_frame<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Siz
     // (no heap allocation): nodes[..n] are sorted by θ and the interval being examined is the
     // last pair. Each split adds one node and each pruned interval removes one, so the stack
     // holds SEEDS + 1 nodes plus the current depth, about 45 for midpoint splits to 1e-14.
-    let first = node_at(&mut sv, theta_start, normal_at(theta_start)).ok_or(QueryError::Degenerate)?;
+    let first = node_at(sv, theta_start, normal_at(theta_start)).ok_or(QueryError::Degenerate)?;
     let mut nodes = [first; NODE_STACK];
     let mut n = 1;
     for k in 1..=SEEDS {
@@ -352,7 +372,7 @@ pub(crate) fn stationary_in_frame<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Siz
         let node = if k == SEEDS {
             Node { theta: th, ..first }
         } else {
-            node_at(&mut sv, th, normal_at(th)).ok_or(QueryError::Degenerate)?
+            node_at(sv, th, normal_at(th)).ok_or(QueryError::Degenerate)?
         };
         consider(&mut best, node.phi, &node.jet);
         nodes[n] = node;
@@ -405,7 +425,7 @@ pub(crate) fn stationary_in_frame<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Siz
             }
         }
         let (th, n1) = split;
-        let mid = match node_at(&mut sv, th, n1.unwrap_or_else(|| normal_at(th))) {
+        let mid = match node_at(sv, th, n1.unwrap_or_else(|| normal_at(th))) {
             Some(n) => n,
             None => return Err(QueryError::Degenerate),
         };
@@ -414,12 +434,23 @@ pub(crate) fn stationary_in_frame<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Siz
         nodes[n] = b;
         n += 1;
     }
-    let (mut phi, mut j) = best.ok_or(QueryError::Degenerate)?;
-    // On a flat piece of object1 F does not depend on φ, so the search may end anywhere along it;
-    // S is linear there (S_φ = σ), and one clamped Newton step puts the witness opposite
-    // object2's point.
+    Ok((best.ok_or(QueryError::Degenerate)?, status))
+}
+
+/// The best point `best` of [`global_search`], its witness moved opposite object2's point when
+/// it lies on a flat piece of object1: there F does not depend on φ, so the search may end
+/// anywhere along it; S is linear there (S_φ = σ), and one clamped Newton step puts it there
+/// (kept only where F stays within the tolerance).
+fn polish_on_flat<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized>(
+    sv: &mut Solver<A, B>,
+    best: (f64, PairPoint),
+    size: f64,
+    options: &DistanceOptions,
+) -> (f64, PairPoint) {
+    let (mut phi, mut j) = best;
+    let tol = options.distance_tolerance * size;
     if j.curve1.normal_turn_rate() == 0.0 && j.side.abs() > sv.side_tol && j.side_p > 0.0 {
-        let (lo, hi) = obj1.phi_range_of_normal(j.curve1.normal);
+        let (lo, hi) = sv.obj1.phi_range_of_normal(j.curve1.normal);
         let w = wrap_phi(phi);
         if lo <= w && w <= hi {
             let target = (w - j.side / j.side_p).clamp(lo, hi);
@@ -431,12 +462,7 @@ pub(crate) fn stationary_in_frame<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Siz
             }
         }
     }
-    let status = if j.fwd > 0.0 && status != DistanceStatus::OutOfIterations {
-        DistanceStatus::Separated
-    } else {
-        status
-    };
-    Ok(finish(&sv, phi, &j, status))
+    (phi, j)
 }
 
 fn consider(best: &mut Option<(f64, PairPoint)>, phi: f64, j: &PairPoint) {

@@ -368,12 +368,43 @@ pub fn build(case: &Case, method: Method) -> Scene {
     if let Some(d) = case.recycle_distance {
         world.params.normalized_contact_recycle_distance = d;
     }
-    let mut fixed_list = Vec::new();
-    let mut dynamic = Vec::new();
-    let mut motor = None;
-    let body_shape = case.body.shape(method);
-    // The launched body: at `at`, velocity `v`, angle `angle`, restitution `e`.
-    let launch = |world: &mut World, at: Vector, v: Vector, angle: f64, e: f64, bullet: bool| {
+    let launcher = Launcher {
+        case,
+        shape: case.body.shape(method),
+        lifted,
+    };
+    let mut f = Furnished {
+        fixed: Vec::new(),
+        dynamic: Vec::new(),
+        motor: None,
+        gravity: GRAVITY,
+    };
+    if !furnish_walls(case, &mut world, &launcher, &mut f) {
+        furnish_bodies(case, &mut world, &launcher, &mut f);
+    }
+    Scene {
+        world,
+        gravity: f.gravity,
+        dynamic: f.dynamic,
+        fixed: f.fixed,
+        motor: f.motor,
+        steps: case.family.steps(),
+    }
+}
+
+/// The case's launched body, one shape for every launch.
+struct Launcher<'a> {
+    case: &'a Case,
+    shape: SharedShape,
+    /// rapier's caps lifted ([`Case::lifted`]).
+    lifted: bool,
+}
+
+impl Launcher<'_> {
+    /// Launches the body at `at`, velocity `v`, angle `angle`, restitution `e`, with CCD when
+    /// `bullet`.
+    fn launch(&self, world: &mut World, at: Vector, v: Vector, angle: f64, e: f64, bullet: bool) -> RigidBodyHandle {
+        let case = self.case;
         world
             .insert(
                 RigidBodyBuilder::dynamic()
@@ -385,10 +416,10 @@ pub fn build(case: &Case, method: Method) -> Scene {
                     .allow_fast_rotation(if case.rotation_cap_kept {
                         case.spin.abs() * DT > FRAC_PI_4
                     } else {
-                        lifted
+                        self.lifted
                     })
                     .can_sleep(false),
-                ColliderBuilder::new(body_shape.clone())
+                ColliderBuilder::new(self.shape.clone())
                     .active_hooks(if bullet && case.ccd_hooks {
                         ActiveHooks::MODIFY_SOLVER_CONTACTS
                     } else {
@@ -399,38 +430,45 @@ pub fn build(case: &Case, method: Method) -> Scene {
                     .restitution_combine_rule(CoefficientCombineRule::Max),
             )
             .0
-    };
+    }
+}
+
+/// What a family puts in the world besides the world itself ([`Scene`]'s other fields).
+struct Furnished {
+    fixed: Vec<ColliderHandle>,
+    dynamic: Vec<RigidBodyHandle>,
+    motor: Option<(ImpulseJointHandle, usize, f64)>,
+    gravity: Vector,
+}
+
+/// The families of walls, chains, posts and wedges: their fixed geometry and launched body;
+/// false for the other families ([`furnish_bodies`]).
+fn furnish_walls(case: &Case, world: &mut World, launcher: &Launcher, f: &mut Furnished) -> bool {
     let v = case.speed;
-    let mut gravity = GRAVITY;
     match case.family {
         Family::SegmentSlide => {
             let len = 1.2 * v * DT * Family::SegmentSlide.steps() as f64 + 20.0;
-            fixed_list.push(fixed(
-                &mut world,
+            f.fixed.push(fixed(
+                world,
                 ColliderBuilder::segment(Vector::new(-10.0, 0.0), Vector::new(len, 0.0)),
                 0.0,
             ));
             let at = Vector::new(0.0, case.body.below());
-            dynamic.push(launch(&mut world, at, Vector::new(v, -0.02 * v), 0.0, 0.0, true));
+            f.dynamic
+                .push(launcher.launch(world, at, Vector::new(v, -0.02 * v), 0.0, 0.0, true));
         }
         Family::SegmentDrop => {
             let len = 0.2 * v * DT * Family::SegmentDrop.steps() as f64 + 20.0;
-            fixed_list.push(fixed(
-                &mut world,
+            f.fixed.push(fixed(
+                world,
                 ColliderBuilder::segment(Vector::new(-len, 0.0), Vector::new(len, 0.0)),
                 0.5,
             ));
-            dynamic.push(launch(
-                &mut world,
-                Vector::new(0.0, 2.0),
-                Vector::new(0.1 * v, -v),
-                0.3,
-                0.5,
-                true,
-            ));
+            f.dynamic
+                .push(launcher.launch(world, Vector::new(0.0, 2.0), Vector::new(0.1 * v, -v), 0.3, 0.5, true));
         }
         Family::ChainBox => {
-            gravity = Vector::ZERO;
+            f.gravity = Vector::ZERO;
             let h = 5.0;
             let pts = vec![
                 Vector::new(-h, -h),
@@ -439,9 +477,11 @@ pub fn build(case: &Case, method: Method) -> Scene {
                 Vector::new(-h, h),
             ];
             let idx = vec![[0, 1], [1, 2], [2, 3], [3, 0]];
-            fixed_list.push(fixed(&mut world, ColliderBuilder::polyline(pts, Some(idx)), 1.0));
+            f.fixed
+                .push(fixed(world, ColliderBuilder::polyline(pts, Some(idx)), 1.0));
             let dir = Vector::new(0.3f64.cos(), 0.3f64.sin());
-            dynamic.push(launch(&mut world, Vector::ZERO, dir * v, 0.0, 1.0, true));
+            f.dynamic
+                .push(launcher.launch(world, Vector::ZERO, dir * v, 0.0, 1.0, true));
         }
         Family::ChainTerrain => {
             let pts: Vec<Vector> = (0..=120)
@@ -450,12 +490,13 @@ pub fn build(case: &Case, method: Method) -> Scene {
                     Vector::new(x, 0.6 * (0.7 * x).sin() + 0.3 * (1.9 * x).sin())
                 })
                 .collect();
-            fixed_list.push(fixed(&mut world, ColliderBuilder::polyline(pts, None), 0.3));
+            f.fixed.push(fixed(world, ColliderBuilder::polyline(pts, None), 0.3));
             let dir = Vector::new(1.0, -0.35).normalize();
-            dynamic.push(launch(&mut world, Vector::new(-18.0, 2.5), dir * v, 0.2, 0.3, true));
+            f.dynamic
+                .push(launcher.launch(world, Vector::new(-18.0, 2.5), dir * v, 0.2, 0.3, true));
         }
         Family::Posts => {
-            gravity = Vector::ZERO;
+            f.gravity = Vector::ZERO;
             for i in 0..5 {
                 for j in 0..5 {
                     let c = Vector::new(2.0 + 1.6 * i as f64, -3.2 + 1.6 * j as f64 + 0.4 * (i % 2) as f64);
@@ -464,73 +505,75 @@ pub fn build(case: &Case, method: Method) -> Scene {
                     } else {
                         ColliderBuilder::cuboid(0.005, 0.35).translation(c)
                     };
-                    fixed_list.push(fixed(&mut world, co, 1.0));
+                    f.fixed.push(fixed(world, co, 1.0));
                 }
             }
             let dir = Vector::new(1.0, 0.27).normalize();
-            dynamic.push(launch(&mut world, Vector::new(0.0, -2.0), dir * v, 0.5, 1.0, true));
+            f.dynamic
+                .push(launcher.launch(world, Vector::new(0.0, -2.0), dir * v, 0.5, 1.0, true));
         }
         Family::Funnel => {
             let half = PI / 6.0; // 60° opening
             let l = 6.0;
             let a = Vector::new(-l * half.sin(), l * half.cos());
             let b = Vector::new(l * half.sin(), l * half.cos());
-            fixed_list.push(fixed(&mut world, ColliderBuilder::segment(a, Vector::ZERO), 0.2));
-            fixed_list.push(fixed(&mut world, ColliderBuilder::segment(Vector::ZERO, b), 0.2));
-            dynamic.push(launch(
-                &mut world,
-                Vector::new(0.4, 5.0),
-                Vector::new(0.05 * v, -v),
-                0.7,
-                0.2,
-                true,
-            ));
+            f.fixed
+                .push(fixed(world, ColliderBuilder::segment(a, Vector::ZERO), 0.2));
+            f.fixed
+                .push(fixed(world, ColliderBuilder::segment(Vector::ZERO, b), 0.2));
+            f.dynamic
+                .push(launcher.launch(world, Vector::new(0.4, 5.0), Vector::new(0.05 * v, -v), 0.7, 0.2, true));
         }
         Family::Wedge => {
-            gravity = Vector::ZERO;
+            f.gravity = Vector::ZERO;
             let half = PI / 18.0; // 20° opening, apex at (6, 0), open towards −x
             let l = 8.0;
             let apex = Vector::new(6.0, 0.0);
             let up = apex + Vector::new(-l * half.cos(), l * half.sin());
             let down = apex + Vector::new(-l * half.cos(), -l * half.sin());
-            fixed_list.push(fixed(&mut world, ColliderBuilder::segment(up, apex), 0.3));
-            fixed_list.push(fixed(&mut world, ColliderBuilder::segment(down, apex), 0.3));
-            dynamic.push(launch(
-                &mut world,
-                Vector::new(0.0, 0.1),
-                Vector::new(v, 0.0),
-                0.0,
-                0.3,
-                true,
-            ));
+            f.fixed.push(fixed(world, ColliderBuilder::segment(up, apex), 0.3));
+            f.fixed.push(fixed(world, ColliderBuilder::segment(down, apex), 0.3));
+            f.dynamic
+                .push(launcher.launch(world, Vector::new(0.0, 0.1), Vector::new(v, 0.0), 0.0, 0.3, true));
         }
         Family::SlideCorner => {
-            fixed_list.push(fixed(
-                &mut world,
+            f.fixed.push(fixed(
+                world,
                 ColliderBuilder::segment(Vector::new(-20.0, 0.0), Vector::new(8.0, 0.0)),
                 0.2,
             ));
-            fixed_list.push(fixed(
-                &mut world,
+            f.fixed.push(fixed(
+                world,
                 ColliderBuilder::segment(Vector::new(8.0, 0.0), Vector::new(8.0, 6.0)),
                 0.2,
             ));
             let at = Vector::new(0.0, case.body.below());
-            dynamic.push(launch(&mut world, at, Vector::new(v, 0.0), 0.0, 0.2, true));
+            f.dynamic
+                .push(launcher.launch(world, at, Vector::new(v, 0.0), 0.0, 0.2, true));
         }
+        _ => return false,
+    }
+    true
+}
+
+/// The families with more than fixed geometry (a stack, a flipper) and the closed or thin
+/// walls: their bodies and launched body ([`furnish_walls`] takes the others).
+fn furnish_bodies(case: &Case, world: &mut World, launcher: &Launcher, f: &mut Furnished) {
+    let v = case.speed;
+    match case.family {
         Family::BulletsStack => {
-            fixed_list.push(fixed(
-                &mut world,
+            f.fixed.push(fixed(
+                world,
                 ColliderBuilder::cuboid(20.0, 0.5).translation(Vector::new(0.0, -0.5)),
                 0.1,
             ));
-            fixed_list.push(fixed(
-                &mut world,
+            f.fixed.push(fixed(
+                world,
                 ColliderBuilder::cuboid(0.025, 4.0).translation(Vector::new(6.025, 4.0)),
                 0.1,
             ));
-            let bullet = launch(&mut world, Vector::new(-6.0, 0.6), Vector::new(v, 0.0), 0.0, 0.1, true);
-            dynamic.push(bullet);
+            let bullet = launcher.launch(world, Vector::new(-6.0, 0.6), Vector::new(v, 0.0), 0.0, 0.1, true);
+            f.dynamic.push(bullet);
             for i in 0..3 {
                 for j in 0..4 {
                     let c = Vector::new(4.6 + 0.46 * i as f64, 0.2 + 0.401 * j as f64);
@@ -538,7 +581,7 @@ pub fn build(case: &Case, method: Method) -> Scene {
                         RigidBodyBuilder::dynamic().translation(c),
                         ColliderBuilder::cuboid(0.2, 0.2).friction(0.5),
                     );
-                    dynamic.push(h);
+                    f.dynamic.push(h);
                 }
             }
         }
@@ -562,23 +605,23 @@ pub fn build(case: &Case, method: Method) -> Scene {
                 .limits([-0.5, 0.5])
                 .motor_velocity(-5.0, 50.0);
             let jh = world.impulse_joints.insert(anchor, flipper, joint, true);
-            motor = Some((jh, 20, 40.0));
-            fixed_list.push(fixed(
-                &mut world,
+            f.motor = Some((jh, 20, 40.0));
+            f.fixed.push(fixed(
+                world,
                 ColliderBuilder::segment(Vector::new(-6.0, 6.0), Vector::new(6.0, 6.0)),
                 0.5,
             ));
-            fixed_list.push(fixed(
-                &mut world,
+            f.fixed.push(fixed(
+                world,
                 ColliderBuilder::segment(Vector::new(-6.0, -3.0), Vector::new(6.0, -3.0)),
                 0.5,
             ));
-            let ball = launch(&mut world, Vector::new(0.4, 2.5), Vector::new(0.0, -v), 0.0, 0.5, true);
-            dynamic.push(ball);
-            dynamic.push(flipper);
+            let ball = launcher.launch(world, Vector::new(0.4, 2.5), Vector::new(0.0, -v), 0.0, 0.5, true);
+            f.dynamic.push(ball);
+            f.dynamic.push(flipper);
         }
         Family::BouncingBox => {
-            gravity = Vector::ZERO;
+            f.gravity = Vector::ZERO;
             let (h, t) = (5.0, 0.025);
             for (c, he) in [
                 (Vector::new(0.0, -h - t), Vector::new(h + 2.0 * t, t)),
@@ -586,45 +629,31 @@ pub fn build(case: &Case, method: Method) -> Scene {
                 (Vector::new(-h - t, 0.0), Vector::new(t, h)),
                 (Vector::new(h + t, 0.0), Vector::new(t, h)),
             ] {
-                fixed_list.push(fixed(
-                    &mut world,
-                    ColliderBuilder::cuboid(he.x, he.y).translation(c),
-                    1.0,
-                ));
+                f.fixed
+                    .push(fixed(world, ColliderBuilder::cuboid(he.x, he.y).translation(c), 1.0));
             }
             let dir = Vector::new(0.61f64.cos(), 0.61f64.sin());
-            dynamic.push(launch(&mut world, Vector::new(0.3, -0.2), dir * v, 0.0, 1.0, true));
+            f.dynamic
+                .push(launcher.launch(world, Vector::new(0.3, -0.2), dir * v, 0.0, 1.0, true));
         }
         Family::ThinWalls => {
-            gravity = Vector::ZERO;
+            f.gravity = Vector::ZERO;
             let half = [0.025, 0.01, 0.005, 0.025][case.variant % 4];
-            fixed_list.push(fixed(
-                &mut world,
+            f.fixed.push(fixed(
+                world,
                 ColliderBuilder::cuboid(half, 3.0).translation(Vector::new(5.0, 0.0)),
                 0.3,
             ));
-            dynamic.push(launch(&mut world, Vector::ZERO, Vector::new(v, 0.0), 0.4, 0.3, true));
+            f.dynamic
+                .push(launcher.launch(world, Vector::ZERO, Vector::new(v, 0.0), 0.4, 0.3, true));
         }
         Family::PlankDrop => {
             let len = 0.2 * v * DT * Family::PlankDrop.steps() as f64 + 20.0;
-            fixed_list.push(fixed(&mut world, ColliderBuilder::cuboid(len, 0.025), 0.3));
-            dynamic.push(launch(
-                &mut world,
-                Vector::new(0.0, 3.0),
-                Vector::new(0.1 * v, -v),
-                0.9,
-                0.3,
-                true,
-            ));
+            f.fixed.push(fixed(world, ColliderBuilder::cuboid(len, 0.025), 0.3));
+            f.dynamic
+                .push(launcher.launch(world, Vector::new(0.0, 3.0), Vector::new(0.1 * v, -v), 0.9, 0.3, true));
         }
-    }
-    Scene {
-        world,
-        gravity,
-        dynamic,
-        fixed: fixed_list,
-        motor,
-        steps: case.family.steps(),
+        _ => unreachable!("furnish_walls takes {:?}", case.family),
     }
 }
 
