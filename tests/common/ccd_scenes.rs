@@ -371,7 +371,6 @@ pub fn build(case: &Case, method: Method) -> Scene {
     let launcher = Launcher {
         case,
         shape: case.body.shape(method),
-        lifted,
     };
     let mut f = Furnished {
         fixed: Vec::new(),
@@ -396,8 +395,6 @@ pub fn build(case: &Case, method: Method) -> Scene {
 struct Launcher<'a> {
     case: &'a Case,
     shape: SharedShape,
-    /// rapier's caps lifted ([`Case::lifted`]).
-    lifted: bool,
 }
 
 impl Launcher<'_> {
@@ -416,7 +413,7 @@ impl Launcher<'_> {
                     .allow_fast_rotation(if case.rotation_cap_kept {
                         case.spin.abs() * DT > FRAC_PI_4
                     } else {
-                        self.lifted
+                        case.lifted()
                     })
                     .can_sleep(false),
                 ColliderBuilder::new(self.shape.clone())
