@@ -51,6 +51,7 @@
 //! contacts while the pose changes by less than its thresholds, which makes smooth bodies roll
 //! over small facets).
 
+use super::apart::{beyond_prediction, circles, circles_apart, far_apart};
 use super::composite::{composite_manifolds, is_composite_like};
 use super::core_disc::{
     add_part_core, core_contact, core_contacts, core_manifold, core_manifold_of, core_of_shape, insert_core_point,
@@ -89,24 +90,6 @@ fn curve_fid(c: &dyn ConvexCurve, n: Vector) -> PackedFeatureId {
     } else {
         vertex_id(2 * k as u32)
     }
-}
-
-/// True when the bounding circles are further apart than `margin` (never for a half-space).
-fn far_apart(pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape, margin: Real) -> bool {
-    if g1.as_shape::<HalfSpace>().is_some() || g2.as_shape::<HalfSpace>().is_some() {
-        return false;
-    }
-    spheres_apart(pos12, g1, g2, margin)
-}
-
-/// True when the bounding circles of two bounded shapes are further apart than `margin`. Never
-/// for a non-finite pose (whose distance ∞ would read as apart: it goes on to the checks that
-/// refuse it, issue 32); an infinite distance from a finite pose (an overflow) is apart.
-fn spheres_apart(pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape, margin: Real) -> bool {
-    let b1 = g1.compute_local_bounding_sphere();
-    let b2 = g2.compute_bounding_sphere(pos12);
-    let gap = (b2.center - b1.center).length() - b1.radius - b2.radius;
-    gap > margin && (gap.is_finite() || pos12.is_finite())
 }
 
 /// Two contacts of a curve resting a flat piece on a half-space, in the curve's frame:
@@ -340,7 +323,14 @@ impl SmoothDispatcher {
         let (Some(s1), Some(s2)) = (support_shape(g1, &mut st1), support_shape(g2, &mut st2)) else {
             return false;
         };
-        if spheres_apart(pos12, g1, g2, prediction) {
+        // A pair whose last manifold had no point (apart beyond the prediction, or new) is tried
+        // along its last normal and its line of centres before the exact contact; one in contact
+        // last time, which usually still is, goes straight to it.
+        let b = circles(pos12, g1, g2);
+        let was_apart = manifold.points.is_empty();
+        if circles_apart(pos12, &b, prediction)
+            || (was_apart && beyond_prediction(s1, s2, pos12, &b, manifold.local_n1, prediction))
+        {
             manifold.clear();
             if let Some(m) = cores {
                 m.clear();

@@ -48,6 +48,7 @@
 //! * `parry_fallback`: parry's answers made robust (nearly touching contacts, windows not at 0);
 //! * `input_guard`: what is refused before parry sees it.
 
+mod apart;
 mod cast;
 mod composite;
 mod core_disc;
@@ -193,10 +194,7 @@ impl SmoothDispatcher {
     /// Quick rejection on bounding circles: true when the shapes are surely further apart than
     /// `margin`.
     pub(crate) fn far_apart(pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape, margin: Real) -> bool {
-        let b1 = g1.compute_local_bounding_sphere();
-        let b2 = g2.compute_bounding_sphere(pos12);
-        let gap = (b2.center - b1.center).length() - b1.radius - b2.radius;
         // Never for a non-finite pose, whose distance ∞ would read as apart (issue 32).
-        gap > margin && (gap.is_finite() || pos12.is_finite())
+        apart::circles_apart(pos12, &apart::circles(pos12, g1, g2), margin)
     }
 }

@@ -72,6 +72,7 @@ mod arc;
 pub(crate) mod feet;
 pub(crate) mod minkowski;
 mod polygons;
+pub(crate) mod separation;
 mod side;
 mod two_ellipses;
 mod walk;
