@@ -90,17 +90,30 @@ mod tests {
             Box::new(RoundedPolygon::regular(3, 0.5, 0.0)),
         ];
         let prediction = 0.02;
-        let mut steps = 0;
+        let (mut steps, mut skipped) = (0, 0);
         for a in &ours {
             for b in &others {
                 let mut manifolds: Vec<ContactManifold<(), ()>> = Vec::new();
                 let mut workspace = None;
+                let (mut st1, mut st2) = Default::default();
+                let s1 = crate::dispatcher::support_shape::support_shape(&**b, &mut st1).unwrap();
+                let s2 = crate::dispatcher::support_shape::support_shape(&**a, &mut st2).unwrap();
                 // Body 2 passes over body 1 and back, turning, from far to touching to far.
                 for k in 0..600 {
                     let s = k as Real / 600.0;
                     let x = 3.0 * (std::f64::consts::TAU * s).cos();
                     let y = 0.9 + 0.8 * (3.0 * std::f64::consts::TAU * s).sin();
                     let pos12 = Pose::new(Vector::new(x, y), 5.0 * s);
+                    // Whether this call takes the skip (the exact manifold's own test).
+                    let c = circles(&pos12, &**b, &**a);
+                    let last = manifolds.first().map_or(Vector::ZERO, |m| m.local_n1);
+                    let was_apart = manifolds.first().is_none_or(|m| m.points.is_empty());
+                    if !circles_apart(&pos12, &c, prediction)
+                        && was_apart
+                        && beyond_prediction(s1, s2, &pos12, &c, last, prediction)
+                    {
+                        skipped += 1;
+                    }
                     d.contact_manifolds(&pos12, &**b, &**a, prediction, &mut manifolds, &mut workspace)
                         .unwrap();
                     let contact = d.contact(&pos12, &**b, &**a, prediction).unwrap();
@@ -123,6 +136,8 @@ mod tests {
             }
         }
         assert_eq!(steps, 5400);
+        // The path spends many steps beside the other shape but beyond the prediction.
+        assert!(skipped > 500, "{skipped} calls skipped the exact contact");
     }
 
     #[test]
