@@ -30,6 +30,7 @@
 
 use super::{Kinematics, PairOnPath};
 use crate::numerics::math::{cross, perp, Real, Vector};
+use crate::query::contact::separation::support_bound;
 use crate::query::contact::SupportShape;
 use core::f64::consts::PI;
 
@@ -116,15 +117,13 @@ impl Sweep<'_> {
     }
 }
 
-/// h_A(n), the support function of A along the unit `n`; `None` for a `CapsuleEllipse`.
+/// h_A(n), the support function of A along the unit `n` (`query::contact::separation`'s, the same
+/// float operations); `None` for a `CapsuleEllipse`, for which that function gives an upper bound
+/// only.
 fn support(sa: SupportShape, n: Vector) -> Option<Real> {
     match sa {
-        SupportShape::Polygon { vertices, radius, .. } => {
-            Some(vertices.iter().map(|v| v.dot(n)).fold(Real::NEG_INFINITY, Real::max) + radius)
-        }
-        SupportShape::Disc(r) => Some(r),
-        SupportShape::Ellipse(a, b) => Some(((a * n.x).powi(2) + (b * n.y).powi(2)).sqrt()),
         SupportShape::CapsuleEllipse(..) => None,
+        _ => Some(support_bound(sa, n)),
     }
 }
 
