@@ -1,11 +1,10 @@
 //! A body rolling or spinning on a long fixed box, against parry's `Ball` under rapier's default
 //! narrow phase (the oracle: a frictionless disc keeps its spin, a disc rolling on a floor keeps
-//! rolling). **Known defect, not yet fixed**: both tests are ignored (`cargo test --release --test
-//! spin_on_long_floor -- --ignored` runs them, and they fail). A core contact of the long box
-//! (`dispatcher::core_disc`) sits on the box's centre line, metres from the disc; rapier's solver
-//! acts on a contact at the middle of its two points, so the box's core contact pushes the disc
-//! at a point on the disc's supporting line far from the disc, a lever of metres that brakes its
-//! spin (docs/rapier.md, "A long body's core contact brakes a spinning neighbour").
+//! rolling). A core contact (`dispatcher::core_disc`) acts where both bodies are: the core disc
+//! against the other body's nearest point. Taken along the pair's contact normal, with its point
+//! on the disc's supporting line opposite the box's centre, the box's core contact pushed the disc
+//! at a point metres beside it (rapier's solver acts on a contact at the middle of its two
+//! points): a lever of metres that stopped the disc's spin within a step.
 
 mod common;
 
@@ -49,7 +48,6 @@ fn run(smooth: bool, x: f64, spin: f64, vx: f64, friction: f64) -> (f64, f64) {
 }
 
 #[test]
-#[ignore = "known defect: a long box's core contact brakes a spinning disc (docs/rapier.md)"]
 fn a_frictionless_disc_spinning_on_a_long_box_keeps_its_spin_as_parry_s_ball_does() {
     for x in [0.0, 1.0, 4.0, -4.0] {
         let (exact, _) = run(true, x, 20.0, 0.0, 0.0);
@@ -63,7 +61,6 @@ fn a_frictionless_disc_spinning_on_a_long_box_keeps_its_spin_as_parry_s_ball_doe
 }
 
 #[test]
-#[ignore = "known defect: a long box's core contact brakes a rolling disc (docs/rapier.md)"]
 fn a_disc_rolling_across_a_long_box_keeps_rolling_as_parry_s_ball_does() {
     for (x, v) in [(-2.0, 2.0), (2.0, -2.0), (2.0, 2.0)] {
         let (exact_spin, exact_x) = run(true, x, -v / 0.2, v, 0.5);
