@@ -82,6 +82,28 @@ fn main() {
         }
     );
     print!("{}", table(&cases, &outcomes));
+    // The *apart* column split: targets rapier asked the dispatcher to cast (its answers) and
+    // targets rapier never asked about (its candidate search), for `SmoothDispatcher`.
+    let asked = outcomes.iter().map(|o| o[0].asked_apart_deepest).fold(0.0, f64::max);
+    let unasked: Vec<String> = cases
+        .iter()
+        .zip(&outcomes)
+        .filter(|(_, o)| o[0].apart_deepest > 1e-9 && o[0].asked_apart_deepest <= 1e-9)
+        .map(|(c, o)| {
+            format!(
+                "{} {} {} m/s {} rad/s: {:.3e} m",
+                c.family.name(),
+                c.body.name(),
+                c.speed,
+                c.spin,
+                o[0].apart_deepest
+            )
+        })
+        .collect();
+    println!(
+        "SmoothDispatcher, apart at a step's start: deepest after it {asked:.3e} m in a target rapier asked the dispatcher \
+         about; deeper than 1e-9 m in a target rapier never asked about: {unasked:?}"
+    );
     for (k, m) in Method::BOTH.iter().enumerate() {
         let only = std::env::var("ONLY").ok();
         let failed: Vec<_> = cases

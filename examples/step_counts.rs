@@ -16,10 +16,9 @@
 
 #[path = "common/mod.rs"]
 mod common;
-#[path = "../tests/common/watched.rs"]
-mod watched;
 
 use common::ccd_scenes::{all_cases, build, drive, Case, Family, Method};
+use common::watched::{Watched, Watcher};
 use common::world::World;
 use parry2d_f64::query::DefaultQueryDispatcher;
 use parry2d_f64::shape::Shape;
@@ -27,7 +26,6 @@ use rapier2d_f64::prelude::*;
 use smooth_ccd2d::SmoothDispatcher;
 use std::sync::Mutex;
 use std::time::Instant;
-use watched::{Watched, Watcher};
 
 /// The dispatcher's calls: seconds, count and points of `contact_manifolds`; seconds and count
 /// of the CCD casts.

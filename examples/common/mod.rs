@@ -32,6 +32,8 @@ pub mod scenarios;
 pub mod scenes;
 #[path = "svg.rs"]
 pub mod svg;
+#[path = "../../tests/common/watched.rs"]
+pub mod watched;
 #[path = "../../tests/common/world.rs"]
 pub mod world;
 

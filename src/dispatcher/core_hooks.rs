@@ -6,10 +6,10 @@
 //! (e = 1) or takes some (e < 1); on two rows with different lever arms on a spinning body it
 //! adds energy ([`super::impact_row`] gives the algebra). Two places make such rows:
 //!
-//! * **the exact point and a core contact.** A pair of this crate's shapes gets two manifolds
+//! * **the exact point and a core contact.** A pair of this crate's shapes gets three manifolds
 //!   in rapier: its exact points, and the bodies' *core contacts* ([`super::core_disc`]:
 //!   speculative points on each body's centre line that stop a centre a spin would drive into
-//!   the other body). Two spinning ellipses with restitution 1 gained up to 40 % in one head-on
+//!   the other body; both bodies' share one manifold where both are along the contact normal). Two spinning ellipses with restitution 1 gained up to 40 % in one head-on
 //!   collision. [`CoreContactHooks`] set the restitution of a manifold made only of core
 //!   contacts to 0: the core rows still hold the centres (no body goes through anything more
 //!   than before), and the bounce is the exact point's alone.

@@ -54,8 +54,7 @@
 use super::apart::{beyond_prediction, circles, circles_apart, far_apart};
 use super::composite::{composite_manifolds, is_composite_like};
 use super::core_disc::{
-    add_part_core, core_contact, core_contacts, core_manifold, core_manifold_of, core_of_shape, insert_core_point,
-    CoreContact,
+    add_part_core, core_contact, core_disc_manifolds, core_manifold_of, core_of_shape, insert_core_point, CoreContact,
 };
 use super::input_guard;
 use super::parry_fallback::{pair_size, parry_within, pushed_together, TOUCH_PUSH};
@@ -313,7 +312,7 @@ impl SmoothDispatcher {
         g2: &dyn Shape,
         prediction: Real,
         manifold: &mut ContactManifold<M, C>,
-        cores: Option<&mut ContactManifold<M, C>>,
+        cores: Option<&mut [ContactManifold<M, C>]>,
     ) -> bool {
         // parry's own pairs (e.g. the parts of a compound) stay parry's.
         if g1.shape_type() != ShapeType::Custom && g2.shape_type() != ShapeType::Custom {
@@ -332,7 +331,7 @@ impl SmoothDispatcher {
             || (was_apart && beyond_prediction(s1, s2, pos12, &b, manifold.local_n1, prediction))
         {
             manifold.clear();
-            if let Some(m) = cores {
+            for m in cores.into_iter().flatten() {
                 m.clear();
             }
             return true;
@@ -349,10 +348,10 @@ impl SmoothDispatcher {
             _ => c,
         };
         match cores {
-            // Both bodies' cores, in a manifold of their own.
+            // Each body's core, in a manifold of its own.
             Some(m) => {
                 manifold_from_contact(pos12, &c, None, prediction, manifold)
-                    && core_manifold(pos12, &c, core_contacts(k, pos12, &c), !manifold.points.is_empty(), m)
+                    && core_disc_manifolds(pos12, [g1, g2], k, &c, !manifold.points.is_empty(), m)
             }
             // One core, with the exact points (a part of a composite shape).
             None => manifold_from_contact(pos12, &c, core_contact(s1, s2, k, pos12, &c), prediction, manifold),
@@ -400,24 +399,24 @@ where
             let finite = manifolds.iter().all(input_guard::AllFinite::all_finite);
             return guarded(manifolds, finite);
         }
-        // Two manifolds, always, for a stable count (rapier's solver graph keeps manifolds by
-        // their place in the list): the pair's points, and the bodies' core contacts.
-        manifolds.truncate(2);
-        while manifolds.len() < 2 {
+        // Three manifolds, always, for a stable count (rapier's solver graph keeps manifolds by
+        // their place in the list): the pair's points, and each body's core contact.
+        manifolds.truncate(3);
+        while manifolds.len() < 3 {
             manifolds.push(ContactManifold::new());
         }
         for m in manifolds.iter_mut() {
             (m.subshape1, m.subshape2, m.subshape_poses) = (0, 0, None);
         }
         let (main, cores) = manifolds.split_at_mut(1);
-        if self.exact_manifold(pos12, g1, g2, prediction, &mut main[0], Some(&mut cores[0])) {
+        if self.exact_manifold(pos12, g1, g2, prediction, &mut main[0], Some(cores)) {
             return Ok(());
         }
         let answer = self.curve_manifold(pos12, g1, g2, None, None, prediction, &mut main[0]);
         match answer {
-            // The bodies' core contacts from the manifold's normal and deepest point.
-            Ok(()) => core_manifold_of(pos12, g1, g2, &main[0], &mut cores[0]),
-            Err(_) => cores[0].clear(),
+            // The bodies' core contacts, when the manifold has a point.
+            Ok(()) => core_manifold_of(pos12, g1, g2, &main[0], cores),
+            Err(_) => cores.iter_mut().for_each(|m| m.clear()),
         }
         answer
     }
@@ -592,13 +591,13 @@ mod tests {
     }
 
     #[test]
-    fn ellipse_on_box_is_one_exact_point_and_both_cores_in_a_manifold_of_their_own() {
+    fn ellipse_on_box_is_one_exact_point_and_each_core_in_a_manifold_of_its_own() {
         let e = Ellipse::new(0.5, 0.2);
         let b = Cuboid::new(Vector::new(2.0, 0.5));
         // Ellipse 0.19 above the box top (penetration 0.01).
         let pos12 = Pose::translation(0.1, 0.69);
         let m = manifolds(&b, &e, &pos12, 0.0);
-        assert_eq!(m.len(), 2);
+        assert_eq!(m.len(), 3);
         assert_eq!(m[0].points.len(), 1);
         let p = &m[0].points[0];
         assert!((p.dist + 0.01).abs() < 1e-12, "{}", p.dist);
@@ -607,42 +606,63 @@ mod tests {
         assert!((p.local_p2 - Vector::new(0.0, -0.2)).length() < 1e-9);
         assert!(p.fid1.is_face());
         assert_eq!(p.fid2, PackedFeatureId::vertex(0));
-        // The core contacts, along the same normal: the box's core (half its inradius 0.5 about
-        // its centre, the point (0, 0.25)) 0.24 below the ellipse's lowest line (y = 0.49), and
-        // the ellipse's (half its inradius 0.2, the point 0.1 below its centre) 0.09 above the
-        // box's face.
-        let cores = &m[1].points;
-        assert_eq!(cores.len(), 2);
-        assert!((m[1].local_n1 - Vector::Y).length() < 1e-12);
-        let (k1, k2) = (&cores[0], &cores[1]);
-        assert!((k1.dist - 0.24).abs() < 1e-12, "{}", k1.dist);
-        assert!((k1.local_p1 - Vector::new(0.0, 0.25)).length() < 1e-12);
-        assert_eq!((k1.fid1, k1.fid2), (vertex_id(CORE_FEATURE), vertex_id(CORE_FEATURE)));
+        // The box's core (half its inradius 0.5 about its centre: a disc of 0.25 at the origin):
+        // its line along the normal (x = 0) misses the ellipse's lowest point (x = 0.1), a curved
+        // side: no core contact (it would push the ellipse at a point it does not have).
+        assert!(m[1].points.is_empty());
+        // The ellipse's core (half its inradius 0.2: a disc of 0.1 about its centre) 0.09 above
+        // the box's face, the point of the face under its centre, in a manifold of its own.
+        let k2 = &m[2].points;
+        assert_eq!(k2.len(), 1);
+        let k2 = &k2[0];
+        assert!((m[2].local_n1 - Vector::Y).length() < 1e-12);
         assert!((k2.dist - 0.09).abs() < 1e-12, "{}", k2.dist);
         assert!((k2.local_p2 - Vector::new(0.0, -0.1)).length() < 1e-12);
         assert!((k2.local_p1 - Vector::new(0.1, 0.5)).length() < 1e-12);
         assert_eq!(k2.fid2, vertex_id(CORE_FEATURE - 1));
-        // Swapped order gives the mirrored manifolds.
+        // Swapped order gives the mirrored manifolds, each body's core in its own.
         let m2 = manifolds(&e, &b, &pos12.inverse(), 0.0);
         let q = &m2[0].points[0];
         assert!((q.dist - p.dist).abs() < 1e-12);
         assert!((q.local_p1 - p.local_p2).length() < 1e-9);
         assert_eq!(q.fid2, p.fid1);
-        let swapped: Vec<f64> = m2[1].points.iter().map(|k| k.dist).collect();
-        assert!(
-            (swapped[0] - 0.09).abs() < 1e-12 && (swapped[1] - 0.24).abs() < 1e-12,
-            "{swapped:?}"
-        );
-        // Apart beyond the prediction: no point, no core contact (two manifolds still, for a
+        assert!((m2[1].points[0].dist - 0.09).abs() < 1e-12);
+        assert!(m2[2].points.is_empty());
+        // Apart beyond the prediction: no point, no core contact (three manifolds still, for a
         // stable count); within it, the exact point and the core contacts, whatever their gaps.
         let far = Pose::translation(0.0, 0.75);
         let apart = manifolds(&b, &e, &far, 0.01);
-        assert_eq!(apart.len(), 2);
+        assert_eq!(apart.len(), 3);
         assert!(apart.iter().all(|m| m.points.is_empty()));
         let near = manifolds(&b, &e, &far, 0.1);
         assert_eq!(near[0].points.len(), 1);
         assert!((near[0].points[0].dist - 0.05).abs() < 1e-12);
-        assert_eq!(near[1].points.len(), 2);
+        // Over the box's centre both cores' lines meet the other body (its face, its lowest
+        // point): both along the normal, in the first core manifold.
+        assert_eq!((near[1].points.len(), near[2].points.len()), (2, 0));
+    }
+
+    #[test]
+    fn a_core_whose_line_misses_a_polygon_meets_its_nearest_point_along_its_own_normal() {
+        // A small square resting on a long box 1.5 from the box's centre: the box's core line
+        // (x = 0) misses the square, so the box's core contact is its core disc (radius 0.25 at
+        // the origin) against the square's nearest corner (1.3, 0.49), along their line; the
+        // square's core (0.1 about its centre) is along the pair's normal, over the box's face.
+        let b = Cuboid::new(Vector::new(2.0, 0.5));
+        let sq = RoundedPolygon::regular(4, 0.2 * std::f64::consts::SQRT_2, 0.0);
+        let pos12 = Pose::new(Vector::new(1.5, 0.69), std::f64::consts::FRAC_PI_4);
+        let m = manifolds(&b, &sq, &pos12, 0.0);
+        assert_eq!(m.len(), 3);
+        let corner = Vector::new(1.3, 0.49);
+        let (k1, n1) = (&m[1].points[0], m[1].local_n1);
+        assert!((n1 - corner / corner.length()).length() < 1e-12, "{n1:?}");
+        assert!((k1.dist - (corner.length() - 0.25)).abs() < 1e-12, "{}", k1.dist);
+        assert!((k1.local_p1 - n1 * 0.25).length() < 1e-12);
+        assert!((pos12 * k1.local_p2 - corner).length() < 1e-12);
+        let k2 = &m[2].points[0];
+        assert!((m[2].local_n1 - Vector::Y).length() < 1e-12);
+        assert!((k2.dist - 0.09).abs() < 1e-12, "{}", k2.dist);
+        assert!((k2.local_p1 - Vector::new(1.5, 0.5)).length() < 1e-12);
     }
 
     #[test]

@@ -30,15 +30,17 @@
 //!
 //! As |Δ| → π the nlerp rotation concentrates in the middle of the window (k → ∞): σ stays near
 //! ½ for most of the rotation and its derivatives at the ends grow like sec²(Δ/2). The paths
-//! with |Δ| within [`NLERP_HALF_TURN`] of π are not clocked this way ([`Clock::nlerp`] answers
-//! `None`); the caller splits them (`query::path`).
+//! closer to π than [`NLERP_HALF_TURN`] are not clocked this way ([`Clock::nlerp`] answers
+//! `None`); the caller takes the path of a turn of π − [`NLERP_HALF_TURN`] for them
+//! (`query::path`), which has its clock.
 
 use core::f64::consts::PI;
 
-/// Turns Δ within this many radians of a half turn are split by the caller instead of clocked:
+/// Turns Δ closer than this to a half turn are taken as a turn of π − NLERP_HALF_TURN by the
+/// caller instead of clocked:
 /// there σ′ at the window's ends exceeds about 1/NLERP_HALF_TURN² (the nlerp rotation happens
 /// almost at once in the middle of the window), and the guards' steps would shrink with it.
-pub(crate) const NLERP_HALF_TURN: f64 = 1e-3;
+pub(crate) const NLERP_HALF_TURN: f64 = 1e-6;
 
 /// A translation clock (module docs): identity, or the nlerp path's σ over a window.
 #[derive(Copy, Clone, Debug, PartialEq)]
@@ -93,10 +95,12 @@ impl ClockBounds {
 impl Clock {
     /// The clock of the nlerp path that turns by `delta` (radians, |Δ| < π) over the window
     /// [`t0`, `t1`]; `None` when the path needs no clock (Δ = 0, an empty window) or cannot have
-    /// one (|Δ| within [`NLERP_HALF_TURN`] of π, or not finite).
+    /// one (|Δ| closer to π than [`NLERP_HALF_TURN`], or not finite). A turn of exactly
+    /// π − [`NLERP_HALF_TURN`] has its clock: `query::path` takes that turn for the paths closer
+    /// to a half turn.
     pub(crate) fn nlerp(delta: f64, t0: f64, t1: f64) -> Option<Clock> {
         let span = t1 - t0;
-        if delta == 0.0 || !(span > 0.0 && span.is_finite() && delta.abs() < PI - NLERP_HALF_TURN) {
+        if delta == 0.0 || !(span > 0.0 && span.is_finite() && delta.abs() <= PI - NLERP_HALF_TURN) {
             return None;
         }
         let half = 0.5 * delta;
@@ -398,7 +402,9 @@ mod tests {
     fn no_clock_for_no_turn_or_a_half_turn() {
         assert!(Clock::nlerp(0.0, 0.0, 1.0).is_none());
         assert!(Clock::nlerp(PI, 0.0, 1.0).is_none());
-        assert!(Clock::nlerp(-PI + 1e-4, 0.0, 1.0).is_none());
+        assert!(Clock::nlerp(-PI + 0.5 * NLERP_HALF_TURN, 0.0, 1.0).is_none());
+        // The turn the caller takes for those closer to a half turn has its clock.
+        assert!(Clock::nlerp(-(PI - NLERP_HALF_TURN), 0.0, 1.0).is_some());
         assert!(Clock::nlerp(1.0, 1.0, 1.0).is_none());
         assert!(Clock::nlerp(f64::NAN, 0.0, 1.0).is_none());
     }

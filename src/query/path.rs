@@ -44,8 +44,10 @@ pub enum MotionPath {
     /// s of the window the rotation centre is at the fraction s of its straight segment and the
     /// rotation is the normalised linear interpolation (nlerp) of the end rotations — the short
     /// way round, so a motion turning by more than half a turn over the window takes the other
-    /// way. Within 1e-6 rad of a half turn, the path of a turn of π − 1e-6 is taken (nlerp is
-    /// undefined at π). One body at most may turn (the other may translate); times and
+    /// way. Within 10⁻⁶ rad of a half turn, the path of a turn of π − 10⁻⁶ is taken (nlerp is
+    /// undefined at π, and its rotation jumps in the middle of the window as the turn nears π):
+    /// there the rotation differs from the nlerp's by at most about 10⁻⁶·s/|1 − 2s| rad at the
+    /// fraction s of the window, more within a few millionths of its middle. One body at most may turn (the other may translate); times and
     /// `distance_rate` are on the window's own clock. Pairs where both bodies turn answer
     /// [`QueryError::UnsupportedMotion`].
     Nlerp,

@@ -26,7 +26,9 @@
 //!   case asks for it, [`Case::moving_pairs`]).
 #![allow(dead_code)]
 
-use super::ccd_scenes::{build, drive, Case, Family, Method, Scene, DT};
+use super::ccd_scenes::{
+    build, drive, recorded_casts, shape_address, start_recording, Case, Family, Method, Scene, DT,
+};
 use parry2d_f64::bounding_volume::BoundingVolume;
 use parry2d_f64::query::sweep_toi::Sweep;
 use parry2d_f64::query::{DefaultQueryDispatcher, QueryDispatcher, Ray};
@@ -66,6 +68,11 @@ pub struct Outcome {
     /// Of the pairs (a CCD-swept body, a fixed target) apart at the step's start, the deepest
     /// penetration at the step's end (m): rapier's CCD stops such a body at the touching pose.
     pub apart_deepest: f64,
+    /// The same, of the pairs rapier asked the dispatcher to cast in that step
+    /// (`SmoothDispatcher`'s casts recorded, `ccd_scenes::CastRecorder`; for rapier's default,
+    /// whose casts of its own shapes do not go through a dispatcher, every pair): the
+    /// dispatcher's answers alone, without the targets rapier's candidate search never offers.
+    pub asked_apart_deepest: f64,
     /// The closest a CCD-swept body's centre of mass came to a fixed target at the end of a
     /// step (signed distance to the target's solid, as a fraction of the body's
     /// `ccd_thickness`; `INFINITY` when no swept body ended a step near one).
@@ -142,6 +149,7 @@ fn run_inner(case: &Case, method: Method) -> Outcome {
             .map(|(h, co)| (h, *co.position()))
             .collect();
         let apart = apart_pairs(&scene, method);
+        start_recording();
         let t = Instant::now();
         if let Some(p) = pass.as_mut() {
             p.before_step(&scene.world.bodies);
@@ -193,8 +201,10 @@ fn run_inner(case: &Case, method: Method) -> Outcome {
             out.deepest = d;
         }
         out.deepest_rel = out.deepest_rel.max(rel);
-        let (apart_deepest, clearance) = after_sweep_checks(&scene, method, &apart);
+        let asked = recorded_casts();
+        let (apart_deepest, asked_apart_deepest, clearance) = after_sweep_checks(&scene, method, &apart, &asked);
         out.apart_deepest = out.apart_deepest.max(apart_deepest);
+        out.asked_apart_deepest = out.asked_apart_deepest.max(asked_apart_deepest);
         out.centre_clearance = out.centre_clearance.min(clearance);
     }
     out
@@ -249,11 +259,18 @@ fn apart_pairs(scene: &Scene, method: Method) -> Vec<(ColliderHandle, ColliderHa
 
 /// After a step, for the CCD-enabled bodies (the launched ones) rapier's CCD swept in it: the
 /// deepest penetration (m) into a fixed target of a pair that `apart` holds (apart at the step's
-/// start), and the smallest signed distance from the body's centre of mass to a fixed target's
-/// solid, over the body's `ccd_thickness` (`INFINITY` if none).
-fn after_sweep_checks(scene: &Scene, method: Method, apart: &[(ColliderHandle, ColliderHandle)]) -> (f64, f64) {
+/// start), the same of the pairs among them whose shapes rapier asked the dispatcher to cast
+/// (`asked`, [`recorded_casts`]; every pair for rapier's default), and the smallest signed
+/// distance from the body's centre of mass to a fixed target's solid, over the body's
+/// `ccd_thickness` (`INFINITY` if none).
+fn after_sweep_checks(
+    scene: &Scene,
+    method: Method,
+    apart: &[(ColliderHandle, ColliderHandle)],
+    asked: &[(usize, usize)],
+) -> (f64, f64, f64) {
     let dispatcher = judge_dispatcher(method);
-    let (mut deepest, mut clearance) = (0.0f64, f64::INFINITY);
+    let (mut deepest, mut asked_deepest, mut clearance) = (0.0f64, 0.0f64, f64::INFINITY);
     // The case's launched bodies (CCD on: this crate's shapes with `SmoothDispatcher`), in the
     // steps rapier's CCD swept them.
     for (_, rb, c, co1) in body_colliders(scene, |rb| rb.is_ccd_enabled() && rb.is_ccd_active()) {
@@ -262,6 +279,10 @@ fn after_sweep_checks(scene: &Scene, method: Method, apart: &[(ColliderHandle, C
             let pos12 = co1.position().inv_mul(co2.position());
             if let Ok(Some(k)) = dispatcher.contact(&pos12, co1.shape(), co2.shape(), 0.0) {
                 deepest = deepest.max(-k.dist);
+                let (a1, a2) = (shape_address(co1.shape()), shape_address(co2.shape()));
+                if method == Method::Rapier || asked.iter().any(|&(x, y)| (x, y) == (a1, a2) || (x, y) == (a2, a1)) {
+                    asked_deepest = asked_deepest.max(-k.dist);
+                }
             }
         }
         let (com, thickness) = (rb.center_of_mass(), co1.shape().ccd_thickness());
@@ -276,7 +297,7 @@ fn after_sweep_checks(scene: &Scene, method: Method, apart: &[(ColliderHandle, C
             }
         }
     }
-    (deepest, clearance)
+    (deepest, asked_deepest, clearance)
 }
 
 /// The largest distance from a dynamic body's centre of mass to its boundary.
@@ -485,6 +506,7 @@ pub struct Tally {
     pub deepest: f64,
     pub deepest_rel: f64,
     pub apart_deepest: f64,
+    pub asked_apart_deepest: f64,
     pub centre_clearance: f64,
     pub seconds: f64,
     pub steps: usize,
@@ -502,6 +524,7 @@ impl Tally {
         self.deepest = self.deepest.max(o.deepest);
         self.deepest_rel = self.deepest_rel.max(o.deepest_rel);
         self.apart_deepest = self.apart_deepest.max(o.apart_deepest);
+        self.asked_apart_deepest = self.asked_apart_deepest.max(o.asked_apart_deepest);
         // The first outcome's, then the least.
         self.centre_clearance = if self.cases == 1 {
             o.centre_clearance

@@ -11,10 +11,13 @@
 //! is below it).
 #![allow(dead_code)]
 
+use super::watched::{Watched, Watcher};
 use super::world::{World, GRAVITY};
 use core::f64::consts::{FRAC_PI_4, PI, TAU};
+use parry2d_f64::shape::Shape;
 use rapier2d_f64::prelude::*;
 use smooth_ccd2d::{CapsuleEllipse, ConvexCurve, Ellipse, RoundedPolygon, SmoothDispatcher};
+use std::cell::RefCell;
 
 /// The time step of every scene.
 pub const DT: f64 = 1.0 / 60.0;
@@ -45,10 +48,54 @@ impl Method {
     /// The method's narrow phase.
     pub fn narrow_phase(self) -> NarrowPhase {
         match self {
-            Method::Smooth => NarrowPhase::with_query_dispatcher(SmoothDispatcher::default()),
+            Method::Smooth => NarrowPhase::with_query_dispatcher(Watched {
+                inner: SmoothDispatcher::default(),
+                watcher: CastRecorder,
+            }),
             Method::Rapier => NarrowPhase::new(),
         }
     }
+}
+
+thread_local! {
+    /// The shape pairs rapier asked `SmoothDispatcher` to cast on this thread since
+    /// [`start_recording`], `None` when not recording.
+    static CASTS: RefCell<Option<Vec<(usize, usize)>>> = const { RefCell::new(None) };
+}
+
+/// A [`Watcher`] of the suite's `SmoothDispatcher` that records which pairs of shapes rapier's
+/// CCD asked it to cast (by the shapes' addresses), while recording is on, without timing the
+/// calls: the judge tells a swept body deep in a target the dispatcher was asked about (the
+/// dispatcher's answer) from one deep in a target rapier never asked about (rapier's candidate
+/// search).
+pub struct CastRecorder;
+
+impl Watcher for CastRecorder {
+    fn cast(&self, g1: &dyn Shape, g2: &dyn Shape, _seconds: f64) {
+        CASTS.with(|c| {
+            if let Some(v) = c.borrow_mut().as_mut() {
+                v.push((shape_address(g1), shape_address(g2)));
+            }
+        });
+    }
+    fn timed(&self) -> bool {
+        false
+    }
+}
+
+/// A shape's address, the key of [`CastRecorder`]'s records.
+pub fn shape_address(g: &dyn Shape) -> usize {
+    g as *const dyn Shape as *const () as usize
+}
+
+/// Starts (or restarts) recording the casts asked on this thread.
+pub fn start_recording() {
+    CASTS.with(|c| *c.borrow_mut() = Some(Vec::new()));
+}
+
+/// The casts asked on this thread since [`start_recording`] (empty when not recording).
+pub fn recorded_casts() -> Vec<(usize, usize)> {
+    CASTS.with(|c| c.borrow().clone().unwrap_or_default())
 }
 
 /// The moving body's shape: every shape family of the crate.

@@ -23,6 +23,23 @@ pub trait Watcher: Send + Sync {
     /// Called after every `cast_shapes_nonlinear` call (rapier's CCD): its shapes and the
     /// seconds it took.
     fn cast(&self, _g1: &dyn Shape, _g2: &dyn Shape, _seconds: f64) {}
+    /// Whether the calls are timed (two clock readings each); a watcher that only records which
+    /// calls were made answers false, and the seconds it is given are 0.
+    fn timed(&self) -> bool {
+        true
+    }
+}
+
+/// A clock reading when `on`: the seconds since it, or 0 (`Watcher::timed`).
+struct Clock(Option<std::time::Instant>);
+
+impl Clock {
+    fn start(on: bool) -> Self {
+        Clock(on.then(std::time::Instant::now))
+    }
+    fn seconds(&self) -> f64 {
+        self.0.map_or(0.0, |t| t.elapsed().as_secs_f64())
+    }
 }
 
 /// The dispatcher `inner`, watched by `watcher`; its answers are `inner`'s.
@@ -98,11 +115,11 @@ impl<D: QueryDispatcher, W: Watcher> QueryDispatcher for Watched<D, W> {
         stop_at_penetration: bool,
     ) -> Result<Option<ShapeCastHit>, Unsupported> {
         self.watcher.query();
-        let start = std::time::Instant::now();
+        let start = Clock::start(self.watcher.timed());
         let answer =
             self.inner
                 .cast_shapes_nonlinear(motion1, g1, motion2, g2, start_time, end_time, stop_at_penetration);
-        self.watcher.cast(g1, g2, start.elapsed().as_secs_f64());
+        self.watcher.cast(g1, g2, start.seconds());
         answer
     }
 }
@@ -118,11 +135,11 @@ impl<M, C, D: PersistentQueryDispatcher<M, C>, W: Watcher> PersistentQueryDispat
         workspace: &mut Option<ContactManifoldsWorkspace>,
     ) -> Result<(), Unsupported> {
         self.watcher.query();
-        let start = std::time::Instant::now();
+        let start = Clock::start(self.watcher.timed());
         let answer = self
             .inner
             .contact_manifolds(pos12, g1, g2, prediction, manifolds, workspace);
-        let seconds = start.elapsed().as_secs_f64();
+        let seconds = start.seconds();
         let points = manifolds.iter().map(|m| m.points.len()).sum();
         self.watcher.manifolds(g1, g2, seconds, points);
         answer

@@ -149,10 +149,10 @@ where
             let manifold = single_manifold(manifolds);
             return self.contact_manifold_convex_convex(pos12, g1, g2, None, None, prediction, manifold);
         };
-        // The core's manifolds of the pair (its points, then the bodies' core contacts: two
-        // manifolds, always, for rapier's solver graph), rounded into two of ours.
-        manifolds.truncate(2);
-        while manifolds.len() < 2 {
+        // The core's manifolds of the pair (its points, then each body's core contact: three
+        // manifolds, always, for rapier's solver graph), rounded into three of ours.
+        manifolds.truncate(3);
+        while manifolds.len() < 3 {
             manifolds.push(ContactManifold::new());
         }
         let mut wide: Vec<q64::ContactManifold<(), ()>> = manifolds.iter().map(widened).collect();
@@ -164,7 +164,7 @@ where
             &mut wide,
             &mut None,
         );
-        wide.resize_with(2, q64::ContactManifold::new);
+        wide.resize_with(3, q64::ContactManifold::new);
         let rounded = manifolds.iter_mut().zip(&wide).all(|(m, w)| {
             (m.subshape1, m.subshape2, m.subshape_poses) = (0, 0, None);
             round_into(w, m)
