@@ -230,8 +230,9 @@ pub(crate) fn core_disc_manifold<M, C: Default + Copy>(
 }
 
 /// Fills `cores` (two manifolds) with both bodies' core contacts, when `with` (the pair has a
-/// contact point), for a pair whose contact is `c` (body 1's frame) and whose shapes and cores
-/// are `shapes` and `cores`. A body's core contact is taken along the pair's normal
+/// contact point), for a pair whose contact is `c` (body 1's frame) and whose shapes, support
+/// shapes (`None` where the contact query does not read a shape) and cores are `shapes`,
+/// `supports` and `cores`. A body's core contact is taken along the pair's normal
 /// ([`core_contacts`]) where its line meets the other body's surface ([`on_other_surface`]: a
 /// flat face facing the core, or the witness); else, against a polygon, as the contact of its
 /// core disc with the polygon's nearest point along its own normal ([`core_disc_contact`]), and
@@ -243,9 +244,11 @@ pub(crate) fn core_disc_manifold<M, C: Default + Copy>(
 /// along the normal share the first manifold (the second is then empty); otherwise each body's
 /// is in its own, body 1's first. False when a manifold refused its contact (the caller then
 /// answers as for a failed contact).
+#[allow(clippy::too_many_arguments)]
 pub(crate) fn core_disc_manifolds<M, C: Default + Copy>(
     pos12: &Pose,
     shapes: [&dyn Shape; 2],
+    supports: [Option<SupportShape>; 2],
     cores: [Option<Core>; 2],
     c: &Contact,
     with: bool,
@@ -253,26 +256,23 @@ pub(crate) fn core_disc_manifolds<M, C: Default + Copy>(
 ) -> bool {
     let (n, w) = (c.normal, &c.points[0]);
     let [a1, a2] = core_contacts(cores, pos12, c);
-    let a1 = a1.filter(|k| on_other_surface(shapes[1], pos12, -n, n, k.centre, w.point2));
-    let a2 = a2.filter(|k| on_other_surface(shapes[0], &Pose::IDENTITY, n, n, k.centre, w.point1));
+    let a1 = a1.filter(|k| on_other_surface(shapes[1], supports[1], pos12, -n, n, k.centre, w.point2));
+    let a2 = a2.filter(|k| on_other_surface(shapes[0], supports[0], &Pose::IDENTITY, n, n, k.centre, w.point1));
     let [m1, m2] = manifolds else {
         return false;
     };
     if a1.is_some() && a2.is_some() {
         return core_manifold(pos12, c, [a1, a2], with, m1) && core_disc_manifold(pos12, None, 0, false, m2);
     }
-    let flat = |g: &dyn Shape| {
-        let mut scratch = SupportScratch::default();
-        matches!(support_shape(g, &mut scratch), Some(SupportShape::Polygon { .. }))
-    };
+    let flat = |s: Option<SupportShape>| matches!(s, Some(SupportShape::Polygon { .. }));
     let one = match a1 {
         Some(k) => Some((n, k)),
-        None if flat(shapes[1]) => cores[0].and_then(|k| core_disc_contact(k, shapes[1], pos12, 0, n)),
+        None if flat(supports[1]) => cores[0].and_then(|k| core_disc_contact(k, shapes[1], pos12, 0, n)),
         None => None,
     };
     let two = match a2 {
         Some(k) => Some((n, k)),
-        None if flat(shapes[0]) => cores[1].and_then(|k| core_disc_contact(k, shapes[0], pos12, 1, n)),
+        None if flat(supports[0]) => cores[1].and_then(|k| core_disc_contact(k, shapes[0], pos12, 1, n)),
         None => None,
     };
     core_disc_manifold(pos12, one, CORE_FEATURE, with, m1) && core_disc_manifold(pos12, two, CORE_FEATURE - 1, with, m2)
@@ -290,7 +290,15 @@ pub(crate) fn core_disc_manifolds<M, C: Default + Copy>(
 /// point is off the body (beside a curve, or past a face's end), and a spin of that body moves
 /// it along n with nothing of the body there. A shape the contact query does not read keeps the
 /// contact as before.
-fn on_other_surface(g: &dyn Shape, pose: &Pose, toward: Vector, n: Vector, centre: Vector, witness: Vector) -> bool {
+fn on_other_surface(
+    g: &dyn Shape,
+    s: Option<SupportShape>,
+    pose: &Pose,
+    toward: Vector,
+    n: Vector,
+    centre: Vector,
+    witness: Vector,
+) -> bool {
     let t = Vector::new(-n.y, n.x);
     let at = centre.dot(t);
     let size = g.compute_local_bounding_sphere();
@@ -300,15 +308,14 @@ fn on_other_surface(g: &dyn Shape, pose: &Pose, toward: Vector, n: Vector, centr
     if off <= margin || off.is_nan() || margin.is_nan() {
         return true;
     }
-    let mut scratch = SupportScratch::default();
-    match support_shape(g, &mut scratch) {
+    match s {
         Some(SupportShape::Polygon { vertices, normals, .. }) => {
             let len = vertices.len();
             normals.iter().enumerate().any(|(i, normal)| {
-                let (a, b) = ((*pose * vertices[i]).dot(t), (*pose * vertices[(i + 1) % len]).dot(t));
-                (pose.rotation * *normal).dot(toward) >= FACE_COSINE
-                    && at >= a.min(b) - margin
-                    && at <= a.max(b) + margin
+                (pose.rotation * *normal).dot(toward) >= FACE_COSINE && {
+                    let (a, b) = ((*pose * vertices[i]).dot(t), (*pose * vertices[(i + 1) % len]).dot(t));
+                    at >= a.min(b) - margin && at <= a.max(b) + margin
+                }
             })
         }
         Some(_) => false,
@@ -456,7 +463,9 @@ pub(crate) fn core_manifold_of<M, C: Default + Copy>(
         return;
     };
     let k = [core_of_any(g1), core_of_any(g2)];
-    if !core_disc_manifolds(pos12, [g1, g2], k, &c, true, cores) {
+    let (mut st1, mut st2) = (SupportScratch::default(), SupportScratch::default());
+    let supports = [support_shape(g1, &mut st1), support_shape(g2, &mut st2)];
+    if !core_disc_manifolds(pos12, [g1, g2], supports, k, &c, true, cores) {
         cores.iter_mut().for_each(|m| m.clear());
     }
 }

@@ -351,7 +351,15 @@ impl SmoothDispatcher {
             // Each body's core, in a manifold of its own.
             Some(m) => {
                 manifold_from_contact(pos12, &c, None, prediction, manifold)
-                    && core_disc_manifolds(pos12, [g1, g2], k, &c, !manifold.points.is_empty(), m)
+                    && core_disc_manifolds(
+                        pos12,
+                        [g1, g2],
+                        [Some(s1), Some(s2)],
+                        k,
+                        &c,
+                        !manifold.points.is_empty(),
+                        m,
+                    )
             }
             // One core, with the exact points (a part of a composite shape).
             None => manifold_from_contact(pos12, &c, core_contact(s1, s2, k, pos12, &c), prediction, manifold),
