@@ -233,6 +233,19 @@ fn with_the_moving_pairs_pass_no_swept_body_ends_deep_in_a_target_it_was_apart_f
     );
 }
 
+/// The cases for which `depth` gives a depth, each described with it.
+fn listed<'a>(
+    cases: &[Case],
+    outcomes: impl Iterator<Item = &'a common::ccd_judge::Outcome>,
+    depth: impl Fn(&common::ccd_judge::Outcome) -> Option<f64>,
+) -> Vec<String> {
+    cases
+        .iter()
+        .zip(outcomes)
+        .filter_map(|(c, o)| depth(o).map(|d| format!("{}: {d:.3e} m", describe(c))))
+        .collect()
+}
+
 /// The cases whose swept bodies ended a step deeper than [`APART_TOLERANCE`] in a fixed target
 /// they started the step apart from: as a failure where rapier asked the dispatcher to cast that
 /// pair (its answer put the body there); the others, targets rapier never asked about, printed.
@@ -240,19 +253,13 @@ fn asked_failures<'a>(
     cases: &[Case],
     outcomes: impl Iterator<Item = &'a common::ccd_judge::Outcome> + Clone,
 ) -> Vec<String> {
-    let unasked: Vec<String> = cases
-        .iter()
-        .zip(outcomes.clone())
-        .filter(|(_, o)| o.apart_deepest > APART_TOLERANCE && o.asked_apart_deepest <= APART_TOLERANCE)
-        .map(|(c, o)| format!("{}: {:.3e} m", describe(c), o.apart_deepest))
-        .collect();
+    let unasked = listed(cases, outcomes.clone(), |o| {
+        (o.apart_deepest > APART_TOLERANCE && o.asked_apart_deepest <= APART_TOLERANCE).then_some(o.apart_deepest)
+    });
     println!("deeper than {APART_TOLERANCE:e} m from apart in a target rapier never asked about: {unasked:?}");
-    let asked: Vec<String> = cases
-        .iter()
-        .zip(outcomes)
-        .filter(|(_, o)| o.asked_apart_deepest > APART_TOLERANCE)
-        .map(|(c, o)| format!("{}: {:.3e} m", describe(c), o.asked_apart_deepest))
-        .collect();
+    let asked = listed(cases, outcomes, |o| {
+        (o.asked_apart_deepest > APART_TOLERANCE).then_some(o.asked_apart_deepest)
+    });
     println!("deeper than {APART_TOLERANCE:e} m from apart in a target rapier asked about (none allowed): {asked:?}");
     if asked.is_empty() {
         Vec::new()
@@ -271,12 +278,9 @@ fn deep_from_apart<'a>(
     outcomes: impl Iterator<Item = &'a common::ccd_judge::Outcome>,
     most: usize,
 ) -> Vec<String> {
-    let deep: Vec<String> = cases
-        .iter()
-        .zip(outcomes)
-        .filter(|(_, o)| o.apart_deepest > APART_TOLERANCE)
-        .map(|(c, o)| format!("{}: {:.3e} m", describe(c), o.apart_deepest))
-        .collect();
+    let deep = listed(cases, outcomes, |o| {
+        (o.apart_deepest > APART_TOLERANCE).then_some(o.apart_deepest)
+    });
     println!("deeper than {APART_TOLERANCE:e} m after a swept step, apart at its start (at most {most}): {deep:?}");
     if deep.len() > most {
         vec![format!(
