@@ -2,7 +2,8 @@
 //! `crates/dev` reach it by path): the drawing helpers ([`svg`]: the output folder, shape
 //! outlines, a hand-written SVG writer), and the files of `tests/common` the examples share with
 //! the tests, included as they are (`#[path]`): the rapier world ([`world`]), its scenes
-//! ([`scenes`], with the RNG [`rng`]) and the resting scenes ([`resting`]), the Appendix D scene
+//! ([`scenes`], with the RNG [`rng`]), the resting scenes ([`resting`]) and the rocking body
+//! ([`rocking`]), the Appendix D scene
 //! ([`appendix_d`]), and the scenario generator ([`scenarios`], with its [`reference`]) that
 //! `examples/toi_timing.rs` times. The main example, `wall_shots`, includes only the four files it
 //! uses (its first build is a newcomer's first wait).
@@ -26,6 +27,8 @@ pub mod reference;
 pub mod resting;
 #[path = "../../tests/common/rng.rs"]
 pub mod rng;
+#[path = "../../tests/common/rocking.rs"]
+pub mod rocking;
 #[path = "../../tests/common/scenarios.rs"]
 pub mod scenarios;
 #[path = "../../tests/common/scenes.rs"]

@@ -13,6 +13,7 @@
 //! * [`moving_pairs`], [`moving_scenes`]: the moving-pairs scenes (issue 30: bullets head-on,
 //!   crossing, a fast plank, the closed box), their world with and without the pass, and the
 //!   judge of pairs through each other;
+//! * [`rocking`]: a smooth body (an ellipse, a weeble) rocking on a floor, and its stand-ins;
 //! * [`watched`]: a dispatcher that passes every query on and reports it (the threads that call
 //!   it, the time of each manifold query).
 //!
@@ -29,6 +30,7 @@ pub mod moving_scenes;
 pub mod reference;
 pub mod resting;
 pub mod rng;
+pub mod rocking;
 pub mod scenarios;
 pub mod scenes;
 pub mod watched;
