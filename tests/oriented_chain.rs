@@ -58,9 +58,28 @@ fn bodies() -> Vec<(&'static str, SharedShape, f64)> {
 }
 
 /// `body` set on `floor` at x = −3 with velocity (3, 0), friction `mu` on both, sleeping off;
-/// its x after 2 s, with rapier's CCD on or off.
+/// its x after 2 s, with rapier's CCD on or off, with `SmoothDispatcher`.
 fn slide(body: &SharedShape, half_height: f64, floor: SharedShape, mu: f64, ccd: bool) -> f64 {
-    let mut w = World::new(NarrowPhase::with_query_dispatcher(SmoothDispatcher::default()));
+    slide_in(
+        NarrowPhase::with_query_dispatcher(SmoothDispatcher::default()),
+        body,
+        half_height,
+        floor,
+        mu,
+        ccd,
+    )
+}
+
+/// [`slide`] in a world of this narrow phase.
+fn slide_in(
+    narrow_phase: NarrowPhase,
+    body: &SharedShape,
+    half_height: f64,
+    floor: SharedShape,
+    mu: f64,
+    ccd: bool,
+) -> f64 {
+    let mut w = World::new(narrow_phase);
     if !ccd {
         w.params.max_ccd_substeps = 0;
     }
@@ -148,5 +167,27 @@ fn a_fast_body_falling_onto_an_oriented_chain_is_stopped_where_the_two_sided_cha
         println!("{speed} m/s, {spin} rad/s: one-sided {one_sided:?}, two-sided {two_sided:?}");
         assert!(two_sided.is_some(), "{speed} m/s: the two-sided chain is hit");
         assert_eq!(one_sided, two_sided, "{speed} m/s, {spin} rad/s");
+    }
+}
+
+#[test]
+fn a_body_sliding_along_a_two_sided_chain_is_caught_at_its_joints_by_rapier_s_solver_as_parry_s_box_is() {
+    // rapier's behaviour on a polyline without the flag, which `docs/rapier.md` (Pitfalls)
+    // describes: the contacts of the segments ahead meet the box's corner at their shared ends,
+    // CCD or not, with this crate's box as with parry's. If this fails, rapier changed.
+    let two_sided = || SharedShape::new(chain(0.15, false));
+    let ours = bodies().remove(0);
+    for ccd in [true, false] {
+        let x = slide(&ours.1, ours.2, two_sided(), 0.0, ccd);
+        let parry = slide_in(
+            NarrowPhase::new(),
+            &SharedShape::cuboid(0.5, 0.05),
+            0.05,
+            two_sided(),
+            0.0,
+            ccd,
+        );
+        println!("two-sided chain, CCD {ccd}: this crate's box x {x:.4}, parry's box x {parry:.4} (6 m of slide: x 3)");
+        assert!(x < 0.0 && parry < 0.0, "CCD {ccd}: x {x}, parry's {parry}");
     }
 }
