@@ -10,8 +10,10 @@
 /// Expands, in the module it is called in, to the composite helpers of a dispatcher `$dispatcher`
 /// (a path to a type implementing the `$parry` crate's `QueryDispatcher` and
 /// `PersistentQueryDispatcher<M, C>` for every `M: Default + Clone + Send + Sync` and
-/// `C: Default + Copy + Send + Sync`, with a method `composite_cast_levels(&self) -> (Real, Real)`:
-/// the target distance and the distance tolerance of its casts): `composite_intersection`, `composite_distance`,
+/// `C: Default + Copy + Send + Sync`, with the methods `composite_cast_levels(&self) -> (Real, Real)`:
+/// the target distance and the distance tolerance of its casts, and `composite_one_sided(&self) ->
+/// bool`: whether its casts take an oriented polyline as rapier's CCD does, one-sided):
+/// `composite_intersection`, `composite_distance`,
 /// `composite_contact`, `composite_closest_points`, `composite_cast`,
 /// `composite_cast_nonlinear` (each `Err(Unsupported)` when neither side is composite),
 /// `is_composite_like` and `composite_manifolds` (parry's `DefaultQueryDispatcher` routing of
@@ -273,8 +275,19 @@ macro_rules! composite_helpers {
             let cost = |node: &$parry::partitioning::BvhNode, _best: Real| entry(node.mins(), node.maxs());
             use $parry::query::QueryDispatcher as _;
             use $parry::shape::TypedCompositeShape as _;
+            // An oriented polyline under rapier's policies: its segments skipped as rapier skips them.
+            let one_sided = if d.composite_one_sided() {
+                OneSided::of(mb, body, whole, &pose, t0, t1)
+            } else {
+                None
+            };
             let leaf = |part: u32, _best: Real| -> Option<ShapeCastHit> {
                 comp.map_untyped_part_at(part, |part_pose, part_shape, _| {
+                    if let (Some(sides), Some(seg)) = (&one_sided, part_shape.as_shape::<$parry::shape::Segment>()) {
+                        if sides.skips(seg) {
+                            return None;
+                        }
+                    }
                     let mp = match part_pose {
                         Some(p) => mc.prepend(*p),
                         None => *mc,
@@ -303,6 +316,63 @@ macro_rules! composite_helpers {
                 })?
             };
             comp.bvh().find_best(Real::MAX, cost, leaf).map(|(_, hit)| hit)
+        }
+
+        /// rapier's early-outs for the segments of an oriented polyline (`PolylineFlags::ORIENTED`,
+        /// a one-sided chain), as parry's `sweep_time_of_impact_composite` takes them in rapier's
+        /// CCD of its own shapes. With the body's centroid at k₁ and k₂ at the window's ends (in
+        /// the polyline's frame) and s₁, s₂ their signed distances from a segment's line, on the
+        /// side its pseudo-normals face (`(k − a) ⟂· e`, e the unit direction from the segment's
+        /// end a to its end b), the segment is no obstacle when the centroid starts behind it
+        /// (s₁ < 0: the chain has one side) or stays in front of it by more than
+        /// `CORE_FRACTION` (¼) of the body's `ccd_thickness` while coming closer by less than
+        /// that (a body resting on or sliding along the chain: the solver's contacts hold it;
+        /// cast against, the segments ahead of a box sliding on a flat chain stopped it at
+        /// their shared ends, where its corner, sunk a fraction of a millimetre by the soft
+        /// contact, met the next segment's end). A segment of no length, or a value that is not
+        /// finite, is cast as any other.
+        struct OneSided {
+            k1: Vector,
+            k2: Vector,
+            core: Real,
+        }
+
+        impl OneSided {
+            /// The early-outs of the convex `body` moving by `mb` against `whole` at rest at
+            /// `pose`, over `[t0, t1]`, when `whole` is an oriented polyline; `None` otherwise.
+            fn of(
+                mb: &NonlinearRigidMotion,
+                body: &dyn Shape,
+                whole: &dyn Shape,
+                pose: &Pose,
+                t0: Real,
+                t1: Real,
+            ) -> Option<OneSided> {
+                let polyline = whole.as_shape::<$parry::shape::Polyline>()?;
+                if !polyline.flags().contains($parry::shape::PolylineFlags::ORIENTED) {
+                    return None;
+                }
+                // rapier's centroid: the shape's, of its mass properties.
+                let centroid = body.mass_properties(1.0).local_com;
+                let at = |t: Real| pose.inv_mul(&mb.position_at_time(t)) * centroid;
+                Some(OneSided {
+                    k1: at(t0),
+                    k2: at(t1),
+                    core: $parry::query::sweep_toi::CORE_FRACTION * body.ccd_thickness(),
+                })
+            }
+
+            /// Whether `seg` (in the polyline's frame) is skipped.
+            fn skips(&self, seg: &$parry::shape::Segment) -> bool {
+                let e = seg.b - seg.a;
+                let length = e.length();
+                if !(length > 0.0 && length.is_finite()) {
+                    return false;
+                }
+                let e = e / length;
+                let (s1, s2) = ((self.k1 - seg.a).perp_dot(e), (self.k2 - seg.a).perp_dot(e));
+                s1 < 0.0 || (s1 - s2 < self.core && s2 > self.core)
+            }
         }
 
         /// The box about its rotation centre c(t) that holds the convex `body` moving by `mb` at
@@ -632,5 +702,12 @@ impl crate::SmoothDispatcher {
     /// the culling of a composite's parts reads (`hit_level` of `composite_helpers!`).
     pub(crate) fn composite_cast_levels(&self) -> (Real, Real) {
         (self.toi_options.target_distance, self.toi_options.distance_tolerance)
+    }
+
+    /// Whether the dispatcher's casts take an oriented polyline as rapier's CCD does, one-sided
+    /// with rapier's early-outs (`OneSided` of `composite_helpers!`): under the rapier policies
+    /// ([`crate::CastPolicy::is_rapier`]); under [`crate::CastPolicy::Plain`] every segment is cast.
+    pub(crate) fn composite_one_sided(&self) -> bool {
+        self.cast_policy.is_rapier()
     }
 }

@@ -91,7 +91,9 @@ pub enum CastPolicy {
     /// path rapier's clamp applies ([`MotionPath::Nlerp`]), and with
     /// `stop_at_penetration = false` a contact at the start answered by the core and the
     /// allowance (module docs). Pairs of two moving, turning bodies (never rapier's) are cast on
-    /// their constant spins.
+    /// their constant spins. An oriented polyline (`PolylineFlags::ORIENTED`) is one-sided, its
+    /// segments skipped as rapier's own sweep skips them (a body behind one, or resting on or
+    /// sliding along it: `docs/rapier.md`, rule 4); so under [`CastPolicy::RapierConstantSpin`].
     #[default]
     Rapier,
     /// rapier's rules of [`CastPolicy::Rapier`] on parry's constant-spin motions

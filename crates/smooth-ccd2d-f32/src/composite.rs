@@ -12,4 +12,10 @@ impl crate::SmoothDispatcher {
         let o = &self.core.toi_options;
         (o.target_distance as Real, o.distance_tolerance as Real)
     }
+
+    /// Whether the dispatcher's casts take an oriented polyline as rapier's CCD does, one-sided
+    /// (its core's policy, `smooth_ccd2d::CastPolicy::is_rapier`).
+    pub(crate) fn composite_one_sided(&self) -> bool {
+        self.core.cast_policy.is_rapier()
+    }
 }

@@ -504,3 +504,37 @@ fn a_cast_against_a_composite_at_rest_is_the_earliest_hit_over_every_part_in_f32
     }
     println!("{cases} f32 composite casts ({hits} hits)");
 }
+
+#[test]
+fn an_oriented_chain_is_one_sided_to_rapier_s_casts_in_f32() {
+    use parry2d::query::NonlinearRigidMotion;
+    use parry2d::shape::{Polyline, PolylineFlags};
+    use smooth_ccd2d_f32::CastPolicy;
+    // A flat chain facing up (vertices from right to left), oriented or not; an ellipse coming
+    // up through it from 0.2 m behind at 30 m/s, spinning.
+    let chain = |flags| {
+        let points = (0..=20)
+            .rev()
+            .map(|i| Vector::new(-1.5 + 0.15 * i as f32, 0.0))
+            .collect();
+        Polyline::with_flags(points, None, flags)
+    };
+    let body = Ellipse::new(0.5, 0.1);
+    let mb = NonlinearRigidMotion::new(
+        Pose::new(Vector::new(0.07, -0.3), 0.2),
+        Vector::ZERO,
+        Vector::new(1.0, 30.0),
+        5.0,
+    );
+    let still = NonlinearRigidMotion::constant_position(Pose::IDENTITY);
+    let cast = |policy, ground: &Polyline| {
+        SmoothDispatcher::default()
+            .with_cast_policy(policy)
+            .cast_shapes_nonlinear(&mb, &body, &still, ground, 0.0, 1.0 / 60.0, false)
+            .expect("a composite at rest is supported")
+    };
+    let oriented = chain(PolylineFlags::ORIENTED);
+    assert!(cast(CastPolicy::Rapier, &oriented).is_none());
+    assert!(cast(CastPolicy::Plain, &oriented).is_some());
+    assert!(cast(CastPolicy::Rapier, &chain(PolylineFlags::empty())).is_some());
+}
