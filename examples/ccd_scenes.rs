@@ -41,6 +41,8 @@ fn main() {
     let rotation_cap_kept = args.iter().any(|a| a == "--rotation-cap-kept");
     // `--moving-pairs`: this crate's pass `MovingPairs` around `SmoothDispatcher`'s steps.
     let moving_pairs = args.iter().any(|a| a == "--moving-pairs");
+    // `--oriented-chains`: the chain box and the chain terrain as oriented (one-sided) polylines.
+    let oriented_chains = args.iter().any(|a| a == "--oriented-chains");
     let filter = args.iter().find(|a| !a.starts_with("--"));
     let cases: Vec<_> = all_cases()
         .into_iter()
@@ -51,6 +53,7 @@ fn main() {
             ccd_hooks,
             rotation_cap_kept,
             moving_pairs,
+            oriented_chains,
             ..c
         })
         .collect();

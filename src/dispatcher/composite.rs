@@ -330,8 +330,8 @@ macro_rules! composite_helpers {
         /// turn: no point of the body comes closer to the line by m over the window (its
         /// centroid's approach, plus at most R·Δ of turning), so a body apart from the segment at
         /// the start ends the window less than m inside it — a body resting on or sliding along
-        /// the chain, which the solver's contacts hold. rapier's own rule leaves out R·Δ, and a
-        /// spinning sliver's tip swung 0.18 m into a segment it started apart from (the CCD scene
+        /// the chain, which the solver's contacts hold. rapier's own rule leaves out R·Δ, and the
+        /// thin ellipse's tip swung 0.17 m into a segment it started apart from (the CCD scene
         /// suite's chain box built as an oriented chain); cast against every segment, a box
         /// sliding on a flat chain was stopped at the segments' shared ends, where its corner,
         /// sunk a fraction of a millimetre by the soft contact, met the next segment's end. A
