@@ -18,7 +18,8 @@
 //! pairs, and `--rotation-cap-kept` to give `allow_fast_rotation` only to the cases whose spin is
 //! above rapier's rotation cap, π/4 a step, not to every case above one of its caps, and
 //! `--moving-pairs` to run `SmoothDispatcher`'s steps with this crate's pass for two moving
-//! bodies, `MovingPairs`, with its default options).
+//! bodies, `MovingPairs`, with its default options, and `--oriented-chains` to build the chain box
+//! and the chain terrain as oriented, one-sided polylines).
 
 #[path = "common/mod.rs"]
 mod common;
