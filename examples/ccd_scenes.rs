@@ -18,7 +18,8 @@
 //! pairs, and `--rotation-cap-kept` to give `allow_fast_rotation` only to the cases whose spin is
 //! above rapier's rotation cap, π/4 a step, not to every case above one of its caps, and
 //! `--moving-pairs` to run `SmoothDispatcher`'s steps with this crate's pass for two moving
-//! bodies, `MovingPairs`, with its default options).
+//! bodies, `MovingPairs`, with its default options, and `--oriented-chains` to build the chain box
+//! and the chain terrain as oriented, one-sided polylines).
 
 #[path = "common/mod.rs"]
 mod common;
@@ -41,6 +42,8 @@ fn main() {
     let rotation_cap_kept = args.iter().any(|a| a == "--rotation-cap-kept");
     // `--moving-pairs`: this crate's pass `MovingPairs` around `SmoothDispatcher`'s steps.
     let moving_pairs = args.iter().any(|a| a == "--moving-pairs");
+    // `--oriented-chains`: the chain box and the chain terrain as oriented (one-sided) polylines.
+    let oriented_chains = args.iter().any(|a| a == "--oriented-chains");
     let filter = args.iter().find(|a| !a.starts_with("--"));
     let cases: Vec<_> = all_cases()
         .into_iter()
@@ -51,6 +54,7 @@ fn main() {
             ccd_hooks,
             rotation_cap_kept,
             moving_pairs,
+            oriented_chains,
             ..c
         })
         .collect();

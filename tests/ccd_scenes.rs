@@ -21,7 +21,9 @@
 //! candidate search misses a target a body turning fast reaches mid-step) are printed. With
 //! the pass `MovingPairs` around the steps: no case at all deeper than [`APART_TOLERANCE`] from
 //! apart, asked or not, and at most one more frozen case (a bullet lodged in the stack). The table it prints has
-//! those two figures and the deepest penetration after a swept step.
+//! those two figures and the deepest penetration after a swept step. The chain families built as
+//! oriented (one-sided) polylines: no body through nor frozen, and none deeper from apart than
+//! the one-sided early-out's bound.
 
 mod common;
 
@@ -225,6 +227,52 @@ fn with_the_moving_pairs_pass_no_swept_body_ends_deep_in_a_target_it_was_apart_f
         failures.push(format!("{} frozen cases, {stack} of them in the stack", frozen.len()));
     }
     failures.extend(deep_from_apart(&cases, outcomes.iter(), 0));
+    assert!(
+        failures.is_empty(),
+        "{} failures:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
+}
+
+/// The chain box and the chain terrain built as oriented (one-sided) polylines, as a game builds
+/// its level (`cargo run --release --example ccd_scenes chain-box --oriented-chains` prints the
+/// table of both methods): no body through a wall, none frozen, no NaN, no panic, every swept
+/// body's centre at least an eighth of its thickness off every fixed target; and a swept body
+/// apart from a segment at the step's start less than a quarter of its `ccd_thickness` inside it
+/// at the step's end — the bound of rapier's one-sided early-out with the turn counted
+/// (docs/rapier.md, rule 4 of `CastPolicy::Rapier`), the segments cast exactly otherwise.
+#[test]
+fn no_body_goes_through_nor_freezes_on_oriented_chains() {
+    let cases: Vec<Case> = all_cases()
+        .into_iter()
+        .filter(|c| matches!(c.family, Family::ChainBox | Family::ChainTerrain))
+        .map(|c| Case {
+            oriented_chains: true,
+            ..c
+        })
+        .collect();
+    let mut failures = Vec::new();
+    let (mut frozen, mut deepest) = (0, 0.0f64);
+    for c in &cases {
+        let o = run_case(c, Method::Smooth);
+        frozen += o.frozen.is_some() as usize;
+        failures.extend(failures_of(c, &o));
+        let margin = 0.25 * c.body.shape(Method::Smooth).ccd_thickness();
+        deepest = deepest.max(o.asked_apart_deepest);
+        if o.asked_apart_deepest >= margin {
+            failures.push(format!(
+                "{}: {} m deep from apart, the margin {margin} m",
+                describe(c),
+                o.asked_apart_deepest
+            ));
+        }
+    }
+    println!(
+        "oriented chains: {} cases, {frozen} frozen, deepest from apart in a target rapier asked about {deepest:.3e} m",
+        cases.len()
+    );
+    assert_eq!(frozen, 0, "frozen on oriented chains:\n{}", failures.join("\n"));
     assert!(
         failures.is_empty(),
         "{} failures:\n{}",

@@ -3,7 +3,8 @@
 //! rapier's sweep skips a segment when the fast body's centroid starts behind it, or stays in
 //! front of it by more than a quarter of the body's `ccd_thickness` while coming closer by less
 //! than that (parry's `sweep_time_of_impact_composite`); `SmoothDispatcher` under its rapier
-//! policies does the same. Before, every segment was cast: a box sliding along a flat chain of
+//! policies does the same, counting what the body's turn moves a point as approach too (a
+//! spinning sliver's tip is not let into the chain). Before, every segment was cast: a box sliding along a flat chain of
 //! 0.15 m segments was stopped at the segments' shared ends (its corner, sunk a fraction of a
 //! millimetre by the soft contact, met the next segment's end): of the 6 m it slides
 //! frictionless in 2 s it travelled 5.85–5.90 m, rounded by 0.02 4.57 m, its velocity kept —
@@ -190,4 +191,36 @@ fn a_body_sliding_along_a_two_sided_chain_is_caught_at_its_joints_by_rapier_s_so
         println!("two-sided chain, CCD {ccd}: this crate's box x {x:.4}, parry's box x {parry:.4} (6 m of slide: x 3)");
         assert!(x < 0.0 && parry < 0.0, "CCD {ccd}: x {x}, parry's {parry}");
     }
+}
+
+#[test]
+fn a_spinning_sliver_whose_tip_swings_into_an_oriented_chain_is_stopped_where_the_two_sided_chain_stops_it() {
+    // rapier's own early-out counts the centroid's approach only: a sliver 1 m long turning at
+    // 60 rad/s (1 rad a step) with its centroid 0.3 m over the chain, not moving, would be skipped
+    // and swing its tip 0.2 m into the chain. The turn is counted here: cast, and stopped.
+    let sliver = RoundedPolygon::new(
+        &[
+            Vector::new(-0.5, -0.005),
+            Vector::new(0.5, -0.005),
+            Vector::new(0.5, 0.005),
+            Vector::new(-0.5, 0.005),
+        ],
+        0.0,
+    );
+    let motion = NonlinearRigidMotion::new(
+        Pose::new(Vector::new(0.02, 0.3), 0.1),
+        Vector::ZERO,
+        Vector::ZERO,
+        -60.0,
+    );
+    let still = NonlinearRigidMotion::constant_position(Pose::IDENTITY);
+    let d = SmoothDispatcher::default();
+    let hit = |floor: &Polyline| {
+        d.cast_shapes_nonlinear(&motion, &sliver, &still, floor, 0.0, DT, false)
+            .expect("a supported pair")
+            .map(|h| h.time_of_impact)
+    };
+    let (one_sided, two_sided) = (hit(&chain(0.15, true)), hit(&chain(0.15, false)));
+    assert!(two_sided.is_some(), "the tip reaches the chain within the step");
+    assert_eq!(one_sided, two_sided);
 }

@@ -320,21 +320,29 @@ macro_rules! composite_helpers {
 
         /// rapier's early-outs for the segments of an oriented polyline (`PolylineFlags::ORIENTED`,
         /// a one-sided chain), as parry's `sweep_time_of_impact_composite` takes them in rapier's
-        /// CCD of its own shapes. With the body's centroid at k₁ and k₂ at the window's ends (in
-        /// the polyline's frame) and s₁, s₂ their signed distances from a segment's line, on the
-        /// side its pseudo-normals face (`(k − a) ⟂· e`, e the unit direction from the segment's
-        /// end a to its end b), the segment is no obstacle when the centroid starts behind it
-        /// (s₁ < 0: the chain has one side) or stays in front of it by more than
-        /// `CORE_FRACTION` (¼) of the body's `ccd_thickness` while coming closer by less than
-        /// that (a body resting on or sliding along the chain: the solver's contacts hold it;
-        /// cast against, the segments ahead of a box sliding on a flat chain stopped it at
-        /// their shared ends, where its corner, sunk a fraction of a millimetre by the soft
-        /// contact, met the next segment's end). A segment of no length, or a value that is not
-        /// finite, is cast as any other.
+        /// CCD of its own shapes, with the turn counted. With the body's centroid at k₁ and k₂ at
+        /// the window's ends (in the polyline's frame) and s₁, s₂ their signed distances from a
+        /// segment's line, on the side its pseudo-normals face (`(k − a) ⟂· e`, e the unit
+        /// direction from the segment's end a to its end b), the segment is no obstacle when the
+        /// centroid starts behind it (s₁ < 0: the chain has one side), or stays in front of it
+        /// by more than m = `CORE_FRACTION` (¼) of the body's `ccd_thickness` while
+        /// s₁ − s₂ + R·Δ < m, R the body's reach about its centroid and Δ = |ω|·(t₁ − t₀) its
+        /// turn: no point of the body comes closer to the line by m over the window (its
+        /// centroid's approach, plus at most R·Δ of turning), so a body apart from the segment at
+        /// the start ends the window less than m inside it — a body resting on or sliding along
+        /// the chain, which the solver's contacts hold. rapier's own rule leaves out R·Δ, and the
+        /// thin ellipse's tip swung 0.17 m into a segment it started apart from (the CCD scene
+        /// suite's chain box built as an oriented chain); cast against every segment, a box
+        /// sliding on a flat chain was stopped at the segments' shared ends, where its corner,
+        /// sunk a fraction of a millimetre by the soft contact, met the next segment's end. A
+        /// segment of no length, or a value that is not finite, is cast as any other.
         struct OneSided {
             k1: Vector,
             k2: Vector,
-            core: Real,
+            /// m: the approach below which a segment is skipped.
+            margin: Real,
+            /// R·Δ: how far the turn can move a point of the body.
+            turning: Real,
         }
 
         impl OneSided {
@@ -355,10 +363,13 @@ macro_rules! composite_helpers {
                 // rapier's centroid: the shape's, of its mass properties.
                 let centroid = body.mass_properties(1.0).local_com;
                 let at = |t: Real| pose.inv_mul(&mb.position_at_time(t)) * centroid;
+                let sphere = body.compute_local_bounding_sphere();
+                let reach = sphere.radius + (sphere.center - centroid).length();
                 Some(OneSided {
                     k1: at(t0),
                     k2: at(t1),
-                    core: $parry::query::sweep_toi::CORE_FRACTION * body.ccd_thickness(),
+                    margin: $parry::query::sweep_toi::CORE_FRACTION * body.ccd_thickness(),
+                    turning: reach * mb.angvel.abs() * (t1 - t0).abs(),
                 })
             }
 
@@ -371,7 +382,7 @@ macro_rules! composite_helpers {
                 }
                 let e = e / length;
                 let (s1, s2) = ((self.k1 - seg.a).perp_dot(e), (self.k2 - seg.a).perp_dot(e));
-                s1 < 0.0 || (s1 - s2 < self.core && s2 > self.core)
+                s1 < 0.0 || (s1 - s2 + self.turning < self.margin && s2 > self.margin)
             }
         }
 

@@ -92,8 +92,9 @@ pub enum CastPolicy {
     /// `stop_at_penetration = false` a contact at the start answered by the core and the
     /// allowance (module docs). Pairs of two moving, turning bodies (never rapier's) are cast on
     /// their constant spins. An oriented polyline (`PolylineFlags::ORIENTED`) is one-sided, its
-    /// segments skipped as rapier's own sweep skips them (a body behind one, or resting on or
-    /// sliding along it: `docs/rapier.md`, rule 4); so under [`CastPolicy::RapierConstantSpin`].
+    /// segments skipped as rapier's own sweep skips them, the body's turn counted (a body behind
+    /// one, or resting on or sliding along it: `docs/rapier.md`, rule 4); so under
+    /// [`CastPolicy::RapierConstantSpin`].
     #[default]
     Rapier,
     /// rapier's rules of [`CastPolicy::Rapier`] on parry's constant-spin motions

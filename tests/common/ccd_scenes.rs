@@ -14,7 +14,7 @@
 use super::watched::{Watched, Watcher};
 use super::world::{World, GRAVITY};
 use core::f64::consts::{FRAC_PI_4, PI, TAU};
-use parry2d_f64::shape::Shape;
+use parry2d_f64::shape::{PolylineFlags, Shape};
 use rapier2d_f64::prelude::*;
 use smooth_ccd2d::{CapsuleEllipse, ConvexCurve, Ellipse, RoundedPolygon, SmoothDispatcher};
 use std::cell::RefCell;
@@ -346,6 +346,10 @@ pub struct Case {
     /// `SmoothDispatcher`'s run (`--moving-pairs` of the example; docs/rapier.md, "Two moving
     /// bodies"). rapier's default runs as it is.
     pub moving_pairs: bool,
+    /// The chain box and the chain terrain built as oriented polylines (`PolylineFlags::
+    /// ORIENTED`, facing the body: one-sided chains, as a game builds its level; `--oriented-chains`
+    /// of the example), for both methods. By default (false) the plain two-sided polylines.
+    pub oriented_chains: bool,
 }
 
 impl Case {
@@ -374,6 +378,7 @@ pub fn all_cases() -> Vec<Case> {
                         ccd_hooks: false,
                         rotation_cap_kept: false,
                         moving_pairs: false,
+                        oriented_chains: false,
                     });
                 }
             }
@@ -520,9 +525,16 @@ fn furnish_walls(case: &Case, world: &mut World, launcher: &Launcher, f: &mut Fu
                 Vector::new(h, h),
                 Vector::new(-h, h),
             ];
-            let idx = vec![[0, 1], [1, 2], [2, 3], [3, 0]];
-            f.fixed
-                .push(fixed(world, ColliderBuilder::polyline(pts, Some(idx)), 1.0));
+            // Counter-clockwise; oriented, each segment reversed so that the box faces in (parry's
+            // outward normal of a segment a → b is (b − a) turned clockwise).
+            let chain = if case.oriented_chains {
+                let idx = vec![[1, 0], [2, 1], [3, 2], [0, 3]];
+                ColliderBuilder::polyline_with_flags(pts, Some(idx), PolylineFlags::ORIENTED)
+            } else {
+                let idx = vec![[0, 1], [1, 2], [2, 3], [3, 0]];
+                ColliderBuilder::polyline(pts, Some(idx))
+            };
+            f.fixed.push(fixed(world, chain, 1.0));
             let dir = Vector::new(0.3f64.cos(), 0.3f64.sin());
             f.dynamic
                 .push(launcher.launch(world, Vector::ZERO, dir * v, 0.0, 1.0, true));
@@ -534,7 +546,14 @@ fn furnish_walls(case: &Case, world: &mut World, launcher: &Launcher, f: &mut Fu
                     Vector::new(x, 0.6 * (0.7 * x).sin() + 0.3 * (1.9 * x).sin())
                 })
                 .collect();
-            f.fixed.push(fixed(world, ColliderBuilder::polyline(pts, None), 0.3));
+            // Left to right; oriented, right to left so that the terrain faces up.
+            let chain = if case.oriented_chains {
+                let pts = pts.into_iter().rev().collect();
+                ColliderBuilder::polyline_with_flags(pts, None, PolylineFlags::ORIENTED)
+            } else {
+                ColliderBuilder::polyline(pts, None)
+            };
+            f.fixed.push(fixed(world, chain, 0.3));
             let dir = Vector::new(1.0, -0.35).normalize();
             f.dynamic
                 .push(launcher.launch(world, Vector::new(-18.0, 2.5), dir * v, 0.2, 0.3, true));
