@@ -93,16 +93,7 @@ fn main() {
         .iter()
         .zip(&outcomes)
         .filter(|(_, o)| o[0].apart_deepest > 1e-9 && o[0].asked_apart_deepest <= 1e-9)
-        .map(|(c, o)| {
-            format!(
-                "{} {} {} m/s {} rad/s: {:.3e} m",
-                c.family.name(),
-                c.body.name(),
-                c.speed,
-                c.spin,
-                o[0].apart_deepest
-            )
-        })
+        .map(|(c, o)| format!("{}: {:.3e} m", c.describe(), o[0].apart_deepest))
         .collect();
     println!(
         "SmoothDispatcher, apart at a step's start: deepest after it {asked:.3e} m in a target rapier asked the dispatcher \

@@ -82,16 +82,11 @@ const APART_TOLERANCE: f64 = 1e-9;
 /// the centre stays r/8 away (less a rounding allowance).
 const CENTRE_CLEARANCE: f64 = 0.125 - 1e-9;
 
-/// A case as the failures name it: family, body, speed and spin.
-fn describe(c: &Case) -> String {
-    format!("{} {} {} m/s {} rad/s", c.family.name(), c.body.name(), c.speed, c.spin)
-}
-
 /// What went wrong in a case under `SmoothDispatcher` and is never allowed: a body through a
 /// wall, a NaN, a panic, a frozen body outside [`may_freeze`], a swept body's centre within
 /// [`CENTRE_CLEARANCE`] of a fixed target.
 fn failures_of(c: &Case, o: &common::ccd_judge::Outcome) -> Vec<String> {
-    let what = describe(c);
+    let what = c.describe();
     let mut failures = Vec::new();
     if o.centre_clearance < CENTRE_CLEARANCE {
         failures.push(format!(
@@ -129,7 +124,7 @@ fn no_body_goes_through_a_wall_nor_freezes_in_the_ccd_scene_suite() {
         .iter()
         .zip(&outcomes)
         .filter(|(_, o)| o[0].frozen.is_some())
-        .map(|(c, _)| describe(c))
+        .map(|(c, _)| c.describe())
         .collect();
     println!(
         "SmoothDispatcher: {} frozen (at most {MAX_FROZEN}): {frozen:?}",
@@ -221,7 +216,7 @@ fn with_the_moving_pairs_pass_no_swept_body_ends_deep_in_a_target_it_was_apart_f
         "with MovingPairs: {} cases, {} frozen (at most {MAX_FROZEN} in the wedge, {MAX_FROZEN_WITH_PASS} in the stack): {:?}",
         cases.len(),
         frozen.len(),
-        frozen.iter().map(|c| describe(c)).collect::<Vec<_>>()
+        frozen.iter().map(|c| c.describe()).collect::<Vec<_>>()
     );
     if stack > MAX_FROZEN_WITH_PASS || frozen.len() - stack > MAX_FROZEN {
         failures.push(format!("{} frozen cases, {stack} of them in the stack", frozen.len()));
@@ -252,22 +247,17 @@ fn no_body_goes_through_nor_freezes_on_oriented_chains() {
             ..c
         })
         .collect();
-    let mut failures = Vec::new();
-    let (mut frozen, mut deepest) = (0, 0.0f64);
-    for c in &cases {
-        let o = run_case(c, Method::Smooth);
-        frozen += o.frozen.is_some() as usize;
-        failures.extend(failures_of(c, &o));
+    let (frozen, failures, outcomes) = run_smooth(&cases, |c, o| {
         let margin = 0.25 * c.body.shape(Method::Smooth).ccd_thickness();
-        deepest = deepest.max(o.asked_apart_deepest);
-        if o.asked_apart_deepest >= margin {
-            failures.push(format!(
+        (o.asked_apart_deepest >= margin).then(|| {
+            format!(
                 "{}: {} m deep from apart, the margin {margin} m",
-                describe(c),
+                c.describe(),
                 o.asked_apart_deepest
-            ));
-        }
-    }
+            )
+        })
+    });
+    let deepest = outcomes.iter().map(|o| o.asked_apart_deepest).fold(0.0f64, f64::max);
     println!(
         "oriented chains: {} cases, {frozen} frozen, deepest from apart in a target rapier asked about {deepest:.3e} m",
         cases.len()
@@ -290,7 +280,7 @@ fn listed<'a>(
     cases
         .iter()
         .zip(outcomes)
-        .filter_map(|(c, o)| depth(o).map(|d| format!("{}: {d:.3e} m", describe(c))))
+        .filter_map(|(c, o)| depth(o).map(|d| format!("{}: {d:.3e} m", c.describe())))
         .collect()
 }
 
@@ -340,19 +330,28 @@ fn deep_from_apart<'a>(
     }
 }
 
+/// Runs every case with `SmoothDispatcher`: the frozen cases' count, the failures of each case
+/// ([`failures_of`], and `extra`'s), and the outcomes.
+fn run_smooth(
+    cases: &[Case],
+    extra: impl Fn(&Case, &common::ccd_judge::Outcome) -> Option<String>,
+) -> (usize, Vec<String>, Vec<common::ccd_judge::Outcome>) {
+    let (mut frozen, mut failures, mut outcomes) = (0, Vec::new(), Vec::new());
+    for c in cases {
+        let o = run_case(c, Method::Smooth);
+        frozen += o.frozen.is_some() as usize;
+        failures.extend(failures_of(c, &o));
+        failures.extend(extra(c, &o));
+        outcomes.push(o);
+    }
+    (frozen, failures, outcomes)
+}
+
 /// Runs every case with `SmoothDispatcher`, prints the count, and asserts no case froze and no
 /// case failed otherwise (through, NaN, panic, a centre near a wall, a case deep from apart in a
 /// target rapier asked the dispatcher about).
 fn no_body_through_nor_frozen(cases: Vec<Case>, setting: &str) {
-    let mut failures = Vec::new();
-    let mut frozen = 0;
-    let mut outcomes = Vec::new();
-    for c in &cases {
-        let o = run_case(c, Method::Smooth);
-        frozen += o.frozen.is_some() as usize;
-        failures.extend(failures_of(c, &o));
-        outcomes.push(o);
-    }
+    let (frozen, mut failures, outcomes) = run_smooth(&cases, |_, _| None);
     failures.extend(asked_failures(&cases, outcomes.iter()));
     println!("{setting}: {} cases, {frozen} frozen", cases.len());
     assert_eq!(frozen, 0, "frozen with {setting}:\n{}", failures.join("\n"));

@@ -353,6 +353,17 @@ pub struct Case {
 }
 
 impl Case {
+    /// The case as lists name it: family, body, speed and spin.
+    pub fn describe(&self) -> String {
+        format!(
+            "{} {} {} m/s {} rad/s",
+            self.family.name(),
+            self.body.name(),
+            self.speed,
+            self.spin
+        )
+    }
+
     /// Whether the case lifts rapier's caps (its speed or spin is above them; with
     /// [`Case::rotation_cap_kept`], the rotation cap only where its spin is above it).
     pub fn lifted(&self) -> bool {
