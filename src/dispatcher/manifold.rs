@@ -29,7 +29,9 @@
 //! * **Composite shapes** (compound, polyline, trimesh, heightfield, voxels) on either side:
 //!   parry's composite helpers, called with *this* dispatcher so that every sub-pair comes back
 //!   here ([`PersistentQueryDispatcher::contact_manifold_convex_convex`]). Normal constraints
-//!   (trimesh / heightfield pseudo-normals) are applied to the smooth contact's normals.
+//!   (an oriented polyline's or a mesh's pseudo-normals) are applied to the smooth contact's
+//!   normals, and a contact whose normal they moved is re-derived along the new one
+//!   ([`super::constrained`]: none where its line misses the part).
 //! * **Everything else** goes to parry's `DefaultQueryDispatcher`; so does a pair of ours whose
 //!   stationary distance failed (parry then works through the shapes' polygonal feature maps).
 //!   The commonest of parry's own pairs (box–box, disc–disc, a disc against another convex
@@ -53,6 +55,7 @@
 
 use super::apart::{beyond_prediction, circles, circles_apart, far_apart};
 use super::composite::{composite_manifolds, is_composite_like};
+use super::constrained::{along_corrected_normal, Corrected};
 use super::core_disc::{
     add_part_core, core_contact, core_disc_manifolds, core_manifold_of, core_of_shape, insert_core_point, CoreContact,
 };
@@ -185,14 +188,33 @@ fn manifold_from_distance<M, C: Default + Copy>(
     // is unique. p2 − p1 = dist · n1 at the solution, so this only moves a flat-piece witness.
     let (mut p1, mut p2) = (sd.point1, sd.point2);
     let mut dist = sd.distance;
-    if n1 != sd.normal1 {
-        // The normal constraints moved the normal: the separation along the new one.
-        dist = (pos12.transform_point(p2) - p1).dot(n1);
-    }
-    if strict(c2) || g1.as_shape::<HalfSpace>().is_some() {
-        p1 = pos12.transform_point(p2) - n1 * dist;
-    } else if strict(c1) || g2.as_shape::<HalfSpace>().is_some() {
-        p2 = pos12.inverse_transform_point(p1 + n1 * dist);
+    let moved = n1 != sd.normal1;
+    match moved
+        .then(|| along_corrected_normal(pos12, g1, g2, c1, c2, n1, n2))
+        .flatten()
+    {
+        // The normal constraints moved the normal: the body's support point along the new one
+        // and the part's point on its line, or no contact where the line misses the part.
+        Some(Corrected::Contact {
+            point1,
+            point2,
+            dist: d,
+        }) => (p1, p2, dist) = (point1, point2, d),
+        Some(Corrected::Discarded) => {
+            manifold.local_n1 = Vector::ZERO;
+            return;
+        }
+        None => {
+            if moved {
+                // The separation along the new normal.
+                dist = (pos12.transform_point(p2) - p1).dot(n1);
+            }
+            if strict(c2) || g1.as_shape::<HalfSpace>().is_some() {
+                p1 = pos12.transform_point(p2) - n1 * dist;
+            } else if strict(c1) || g2.as_shape::<HalfSpace>().is_some() {
+                p2 = pos12.inverse_transform_point(p1 + n1 * dist);
+            }
+        }
     }
     if dist <= prediction && dist.is_finite() && p1.is_finite() && p2.is_finite() {
         let fid = |g: &dyn Shape, c: Option<&dyn ConvexCurve>, n: Vector| match c {
@@ -200,8 +222,10 @@ fn manifold_from_distance<M, C: Default + Copy>(
             None if g.as_shape::<HalfSpace>().is_some() => face_id(0),
             None => PackedFeatureId::UNKNOWN,
         };
-        let fid1 = fid(g1, c1, sd.normal1);
-        let fid2 = fid(g2, c2, sd.normal2);
+        // A witness moved by the normal constraints is read at the corrected normal.
+        let (m1, m2) = if moved { (n1, n2) } else { (sd.normal1, sd.normal2) };
+        let fid1 = fid(g1, c1, m1);
+        let fid2 = fid(g2, c2, m2);
         manifold.points.push(TrackedContact::new(p1, p2, fid1, fid2, dist));
     }
     manifold.match_contacts(&old_points);

@@ -51,6 +51,7 @@
 mod apart;
 mod cast;
 mod composite;
+mod constrained;
 mod core_disc;
 #[cfg(feature = "rapier")]
 mod core_hooks;

@@ -538,3 +538,43 @@ fn an_oriented_chain_is_one_sided_to_rapier_s_casts_in_f32() {
     assert!(cast(CastPolicy::Plain, &oriented).is_some());
     assert!(cast(CastPolicy::Rapier, &chain(PolylineFlags::empty())).is_some());
 }
+
+#[test]
+fn an_oriented_chain_holds_an_ellipse_near_its_inner_vertex_by_one_point_in_f32() {
+    use parry2d::query::{ContactManifold, PersistentQueryDispatcher};
+    use parry2d::shape::{Polyline, PolylineFlags};
+    // A flat chain of 0.25 m segments facing up (vertices right to left), an inner vertex at the
+    // origin; an ellipse 0.1 mm above it, its lowest point 2 cm left of the vertex. Two-sided,
+    // the segment right of the vertex keeps a point at the vertex (rapier's ghost contact);
+    // oriented, its pseudo-normals turn the normal up and the vertical line through the lowest
+    // point misses it: only the segment under the ellipse holds it (tests/oriented_chain_rest.rs
+    // in f64).
+    let chain = |flags| {
+        let points = (-20..=20).rev().map(|i| Vector::new(0.25 * i as f32, 0.0)).collect();
+        Polyline::with_flags(points, None, flags)
+    };
+    let ellipse = Ellipse::new(0.5, 0.2);
+    let pos12 = Pose::translation(-0.02, 0.2 + 1e-4);
+    let holding = |flags| {
+        let mut manifolds: Vec<ContactManifold<(), ()>> = Vec::new();
+        PersistentQueryDispatcher::<(), ()>::contact_manifolds(
+            &SmoothDispatcher::default(),
+            &pos12,
+            &chain(flags),
+            &ellipse,
+            0.002,
+            &mut manifolds,
+            &mut None,
+        )
+        .expect("supported");
+        let mut parts: Vec<u32> = manifolds
+            .iter()
+            .filter(|m| !m.points.is_empty())
+            .map(|m| m.subshape1)
+            .collect();
+        parts.sort_unstable();
+        parts
+    };
+    assert_eq!(holding(PolylineFlags::empty()), vec![19, 20]);
+    assert_eq!(holding(PolylineFlags::ORIENTED), vec![20]);
+}
