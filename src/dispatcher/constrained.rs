@@ -1,9 +1,10 @@
 //! A contact whose normal a composite part's pseudo-normals moved, re-derived along the new
 //! normal.
 //!
-//! An oriented polyline, a heightfield or a mesh hands each of its parts (a segment, a triangle)
-//! to the dispatcher with *normal constraints*: the cone of normals the part may push along at
-//! each of its features (parry's pseudo-normals). Where the pair's exact normal leaves the cone —
+//! An oriented polyline, and a compound whose internal edges are fixed, hand each of their parts
+//! (a segment, a box) to the dispatcher with *normal constraints*: the cone of normals the part
+//! may push along at each of its features (parry's pseudo-normals; in 2D, parry computes none for
+//! heightfields and meshes). Where the pair's exact normal leaves the cone —
 //! a body near an inner vertex of a flat chain, whose nearest point to the segment beyond that
 //! vertex is the vertex itself — the constraint turns the normal back into the cone, and the
 //! contact must follow: with n the corrected normal (from the part towards the body),

@@ -29,7 +29,7 @@
 //! * **Composite shapes** (compound, polyline, trimesh, heightfield, voxels) on either side:
 //!   parry's composite helpers, called with *this* dispatcher so that every sub-pair comes back
 //!   here ([`PersistentQueryDispatcher::contact_manifold_convex_convex`]). Normal constraints
-//!   (an oriented polyline's or a mesh's pseudo-normals) are applied to the smooth contact's
+//!   (an oriented polyline's or a fixed-edge compound's pseudo-normals) are applied to the smooth contact's
 //!   normals, and a contact whose normal they moved is re-derived along the new one
 //!   ([`super::constrained`]: none where its line misses the part).
 //! * **Everything else** goes to parry's `DefaultQueryDispatcher`; so does a pair of ours whose

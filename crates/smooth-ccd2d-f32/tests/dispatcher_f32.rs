@@ -547,7 +547,7 @@ fn an_oriented_chain_holds_an_ellipse_near_its_inner_vertex_by_one_point_in_f32(
     // origin; an ellipse 0.1 mm above it, its lowest point 2 cm left of the vertex. Two-sided,
     // the segment right of the vertex keeps a point at the vertex (rapier's ghost contact);
     // oriented, its pseudo-normals turn the normal up and the vertical line through the lowest
-    // point misses it: only the segment under the ellipse holds it (tests/oriented_chain_rest.rs
+    // point misses it: only the segment under the ellipse holds it (tests/internal_vertices.rs
     // in f64).
     let chain = |flags| {
         let points = (-20..=20).rev().map(|i| Vector::new(0.25 * i as f32, 0.0)).collect();
