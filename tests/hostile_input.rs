@@ -10,6 +10,10 @@
 //! through the fuzz's checks of `crates/dev/tests/adversarial.rs` (`reliability::run_case`, with its limit
 //! per call). f32 sizes are in `crates/smooth-ccd2d-f32/tests/f32_sizes.rs`.
 //!
+//! And `contacts_on_parts_with_pseudo_normals_stay_finite_on_hostile_bodies`: the bodies of both
+//! batches against an oriented polyline and a compound with fixed internal edges, where the
+//! dispatcher re-derives a contact along the normal the parts' pseudo-normals turned.
+//!
 //! The reproductions sit in three modules: `user_curves` (a user's curve breaking its contract,
 //! and the checks that refuse it), `far_and_fast` (far poses, extreme speeds and time scales) and
 //! `odd_shapes` (10⁵ vertices, balls of no size, needle arcs, flat triangles, non-finite poses).
@@ -153,4 +157,108 @@ fn hostile_fuzz_of_every_query_keeps_its_promises() {
         "{} of {n} hostile cases broke a promise",
         failures.len()
     );
+}
+
+// ---------------------------------------------------------------------------------------------
+// Contacts on parts with pseudo-normals
+// ---------------------------------------------------------------------------------------------
+
+/// Bodies of the hostile and the ordinary batches (lying user curves, 10⁵-vertex polygons,
+/// poses far from the origin, sizes 1e-6…1e6 and wild ones), each against an oriented polyline
+/// zigzagging under it (convex and concave inner vertices) and a compound of three boxes with
+/// fixed internal edges, at the case's scale and pose, both orders: parts whose pseudo-normals
+/// move the contact normal, where the dispatcher re-derives the contact along it
+/// (`dispatcher::constrained`). Every manifold `Ok` or `Unsupported`, its points and normals
+/// finite, no panic, each case within [`CASE_LIMIT`]. Prints its counts.
+#[test]
+fn contacts_on_parts_with_pseudo_normals_stay_finite_on_hostile_bodies() {
+    use parry2d_f64::shape::{CompoundFlags, Polyline, PolylineFlags};
+    let (hostile_cases, ordinary_cases) = (200u64, 400u64);
+    let (mut manifolds, mut points, mut failures) = (0usize, 0usize, Vec::new());
+    let cases = (0..hostile_cases)
+        .map(|i| reliability::hostile::hostile(0x5EED_C0DE, i).0)
+        .chain((0..ordinary_cases).map(|i| reliability::generate(0x5EED_C0DE, i)));
+    for case in cases {
+        let Ok(body) = reliability::build(&case.s1) else {
+            continue;
+        };
+        if body.halfspace.is_some() {
+            continue;
+        }
+        let (s, pos12, prediction) = (case.scale, case.pos12, case.prediction);
+        let (tx, rx) = mpsc::channel();
+        std::thread::spawn(move || {
+            let run = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+                // Vertices right to left (facing up), zigzag with convex and concave inner vertices.
+                let zigzag: Vec<Vector> = (-4..=4)
+                    .rev()
+                    .map(|i| Vector::new(0.5 * s * i as f64, 0.1 * s * (i % 2) as f64 - s))
+                    .collect();
+                let chain = Polyline::with_flags(zigzag, None, PolylineFlags::ORIENTED);
+                let boxes = Compound::with_flags(
+                    (-1..=1)
+                        .map(|i| {
+                            (
+                                Pose::translation(s * i as f64, -1.5 * s),
+                                SharedShape::cuboid(0.5 * s, 0.5 * s),
+                            )
+                        })
+                        .collect(),
+                    CompoundFlags::FIX_INTERNAL_EDGES,
+                    None,
+                );
+                let d = SmoothDispatcher::default();
+                let mut found = (0usize, 0usize, Vec::new());
+                for floor in [&chain as &dyn Shape, &boxes as &dyn Shape] {
+                    for flip in [false, true] {
+                        let mut ms: Vec<ContactManifold<(), ()>> = Vec::new();
+                        let r = if flip {
+                            d.contact_manifolds(&pos12.inverse(), &*body.shape, floor, prediction, &mut ms, &mut None)
+                        } else {
+                            d.contact_manifolds(&pos12, floor, &*body.shape, prediction, &mut ms, &mut None)
+                        };
+                        if let Err(e) = r {
+                            let _: Unsupported = e;
+                        }
+                        for m in &ms {
+                            found.0 += 1;
+                            let finite_normal =
+                                m.points.is_empty() || (m.local_n1.is_finite() && m.local_n2.is_finite());
+                            if !finite_normal {
+                                found.2.push(format!("normal {:?} {:?}", m.local_n1, m.local_n2));
+                            }
+                            for p in &m.points {
+                                found.1 += 1;
+                                if !(p.local_p1.is_finite() && p.local_p2.is_finite() && p.dist.is_finite()) {
+                                    found.2.push(format!("point {p:?}"));
+                                }
+                            }
+                        }
+                    }
+                }
+                found
+            }));
+            let _ = tx.send(run.map_err(|_| ()));
+        });
+        match rx.recv_timeout(CASE_LIMIT) {
+            Ok(Ok((m, p, bad))) => {
+                manifolds += m;
+                points += p;
+                if !bad.is_empty() {
+                    failures.push(format!("{}: {}", reliability::describe(&case), bad.join("; ")));
+                }
+            }
+            Ok(Err(())) => failures.push(format!("PANIC {}", reliability::describe(&case))),
+            Err(_) => panic!("HANG: {}", reliability::describe(&case)),
+        }
+    }
+    println!(
+        "pseudo-normal parts: {} cases, {manifolds} manifolds, {points} points, {} broken",
+        hostile_cases + ordinary_cases,
+        failures.len()
+    );
+    for f in failures.iter().take(10) {
+        println!("  FAIL {f}");
+    }
+    assert!(failures.is_empty(), "{} cases broke a promise", failures.len());
 }

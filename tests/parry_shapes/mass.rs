@@ -64,6 +64,18 @@ fn sharp_rounded_polygon_mass_matches_parry_convex_and_round_convex_polygon() {
     // parry's RoundConvexPolygon ignores the border in its mass: ours does not.
     let p = RoundedPolygon::regular(4, 1.0, 0.5);
     assert!(p.mass_properties(1.0).mass() > p.to_parry().unwrap().mass_properties(1.0).mass() + 1.0);
+    // The CCD suite's rounded heptagon, as docs/rapier.md quotes it.
+    let h = RoundedPolygon::regular(7, 0.4, 0.06);
+    let (ours, parry) = (h.mass_properties(1.0), h.to_parry().unwrap().mass_properties(1.0));
+    let three = |x: f64| format!("{x:.3}");
+    assert_eq!(
+        (three(ours.mass()), format!("{:.4}", ours.principal_inertia())),
+        ("0.595".into(), "0.0565".into())
+    );
+    assert_eq!(
+        (three(parry.mass()), format!("{:.4}", parry.principal_inertia())),
+        ("0.438".into(), "0.0306".into())
+    );
 }
 
 #[test]
