@@ -439,16 +439,27 @@ const FUZZ_CASES: u64 = 40_000;
 /// `coincident` 0x5F98_9700_FFF3_3F59, `concentric` 0xE909_8175_9B60_B80C, `extreme-scale`
 /// 0xBD8D_A386_5B25_3003, `parry-pair` 0xE98C_B83D_BE52_94A2, `random` 0xDD88_A853_A80D_1639,
 /// `thin-ellipse` 0x1622_D4BB_CED0_552D, `wild` 0xADB6_32B1_C2C6_5DA7.
+///
+/// Re-recorded when a segment's core got its radius 0 exactly (`parry_shape::polygon_core`):
+/// the rounding of a tilted segment's dot products had given it a radius of about 1e-17, which
+/// passed the core contacts' `radius > 0` test, and the manifolds a "core contact" at the
+/// segment's midpoint against the other body's tangent line — a ghost support where the other
+/// body is not (a wheel rolling on a chain of short segments was pushed at each segment's middle).
+/// Measured with a per-case dump of the batch, the build before and after: 19 cases moved, every
+/// one a tilted parry `Segment` against one of the crate's polygons (2 of them wrapped as a user's
+/// curve; `parry-pair` 16, `wild` 2, `extreme-scale` 1); no other case moved, and the casts,
+/// distances and contacts do not read that core (only `contact_manifolds`' core contacts). Before: `extreme-scale`
+/// 0x8704_1C0D_9875_37B5, `parry-pair` 0x54D9_F819_CF58_F04F, `wild` 0x4406_B0D4_2A21_C768.
 const FUZZ_DIGESTS: [(&str, u64); 9] = [
     ("coincident", 0x11E1_BDEE_669D_AAF4),
     ("concentric", 0x9B96_9EF7_E662_BB43),
-    ("extreme-scale", 0x8704_1C0D_9875_37B5),
+    ("extreme-scale", 0x5CED_0D71_B611_F033),
     ("grazing", 0x09E5_F3BA_3F2A_2824),
-    ("parry-pair", 0x54D9_F819_CF58_F04F),
+    ("parry-pair", 0xCD06_D94C_2E46_994D),
     ("random", 0x0FE4_F450_1ACF_26DC),
     ("thin-ellipse", 0x8290_2E6D_9921_7ABF),
     ("touching-at-t0", 0x95DF_4EF2_FB2B_9A38),
-    ("wild", 0x4406_B0D4_2A21_C768),
+    ("wild", 0x1C3E_790D_A988_0946),
 ];
 
 /// Final-state hash of the rapier scene (re-recorded with issue 17: the CCD casts between its

@@ -633,12 +633,39 @@ mod tests {
                 want.radius
             );
         }
-        // A segment has no inside: its core is its midpoint with radius 0.
+        // A segment has no inside: its core is its midpoint with radius 0 — exactly, at every
+        // angle (the rounding of a tilted segment's dot products once gave it a radius of 1e-17,
+        // and the manifolds a core contact at its midpoint: a ghost support under a wheel on a
+        // chain of them, where the wheel is not).
         let mut scratch = SupportScratch::default();
         let seg = Segment::new(Vector::new(-1.0, 2.0), Vector::new(3.0, 2.0));
         let core = core_of(support_shape(&seg, &mut scratch).unwrap()).unwrap();
         assert_eq!(core.centre, Vector::new(1.0, 2.0));
         assert_eq!(core.radius, 0.0);
+        let mut positive_before = 0;
+        for k in 0..1000 {
+            let angle = 0.0123 * k as f64;
+            let (a, b) = (
+                Vector::new(-2.4, 0.3 * angle.sin()),
+                Vector::new(-2.4 + 0.2 * angle.cos(), 0.2 * angle.sin()),
+            );
+            let (mut scratch, seg) = (SupportScratch::default(), Segment::new(a, b));
+            let SupportShape::Polygon { vertices, normals, .. } = support_shape(&seg, &mut scratch).unwrap() else {
+                panic!("a segment is a polygon of two vertices");
+            };
+            let c = (a + b) / 2.0;
+            positive_before += usize::from(
+                (0..2)
+                    .map(|i| normals[i].dot(vertices[i] - c))
+                    .fold(f64::INFINITY, f64::min)
+                    > 0.0,
+            );
+            let mut scratch = SupportScratch::default();
+            let core = core_of(support_shape(&seg, &mut scratch).unwrap()).unwrap();
+            assert_eq!(core.radius, 0.0, "segment {a:?} – {b:?}");
+        }
+        // The rounding the old formula read as a radius, on this sample.
+        assert!(positive_before > 0);
     }
 
     /// A user's curve wrapping one of the crate's shapes has that shape's core: the centroid

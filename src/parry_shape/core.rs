@@ -70,10 +70,18 @@ pub(crate) fn polygon_core(v: &[Vector], normals: &[Vector], r: f64) -> Option<C
     } else {
         return None;
     };
-    let radius = (0..n)
-        .map(|i| normals[i].dot(v[i] - centre))
-        .fold(f64::INFINITY, f64::min)
-        + r;
+    // A segment's midpoint lies on its line: its distance to it is 0, not the rounding of the
+    // dot products below (which can be 1e-17 either way for a segment off the axes, and made a
+    // bare segment a core of that radius: a core contact at its midpoint, against the other
+    // body's tangent line, a ghost support where that body is not).
+    let inner = if area > 0.0 {
+        (0..n)
+            .map(|i| normals[i].dot(v[i] - centre))
+            .fold(f64::INFINITY, f64::min)
+    } else {
+        0.0
+    };
+    let radius = inner + r;
     Some(Core {
         centre,
         radius: radius.max(0.0),
