@@ -56,6 +56,7 @@ mod core_disc;
 #[cfg(feature = "rapier")]
 mod core_hooks;
 mod disc_cast;
+mod distance_manifold;
 mod impact_row;
 pub(crate) mod inline_polygon;
 pub(crate) mod input_guard;
