@@ -447,8 +447,9 @@ const FUZZ_CASES: u64 = 40_000;
 /// body is not (a wheel rolling on a chain of short segments was pushed at each segment's middle).
 /// Measured with a per-case dump of the batch, the build before and after: 19 cases moved, every
 /// one a tilted parry `Segment` against one of the crate's polygons (2 of them wrapped as a user's
-/// curve; `parry-pair` 16, `wild` 2, `extreme-scale` 1); no other case moved, and the casts,
-/// distances and contacts do not read that core (only `contact_manifolds`' core contacts). Before: `extreme-scale`
+/// curve; `parry-pair` 16, `wild` 2, `extreme-scale` 1); no other case moved. The casts,
+/// distances and contacts do not read that core (only `contact_manifolds`' core contacts; a
+/// two-vertex `RoundedPolygon`'s `ccd_thickness`, its corner radius, loses the same rounding). Before: `extreme-scale`
 /// 0x8704_1C0D_9875_37B5, `parry-pair` 0x54D9_F819_CF58_F04F, `wild` 0x4406_B0D4_2A21_C768.
 const FUZZ_DIGESTS: [(&str, u64); 9] = [
     ("coincident", 0x11E1_BDEE_669D_AAF4),

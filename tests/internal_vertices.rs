@@ -36,18 +36,24 @@ fn chain(length: f64, oriented: bool) -> Polyline {
     Polyline::with_flags(points, None, flags)
 }
 
-/// The body's pose after 2 s dropped from 1 cm above the floor with its centre `offset` from the
-/// origin, turned by 0.001 rad, onto `floor`; `smooth` picks `SmoothDispatcher` (else rapier's
-/// default narrow phase).
-fn landed(shape: SharedShape, half_height: f64, offset: f64, floor: Polyline, smooth: bool) -> Pose {
+/// A world with `floor` (its `friction`) on `SmoothDispatcher` (`smooth`) or rapier's default
+/// narrow phase.
+fn world_on(floor: SharedShape, friction: f64, smooth: bool) -> World {
     let narrow_phase = if smooth {
         NarrowPhase::with_query_dispatcher(SmoothDispatcher::default())
     } else {
         NarrowPhase::new()
     };
     let mut w = World::new(narrow_phase);
-    w.colliders
-        .insert(ColliderBuilder::new(SharedShape::new(floor)).friction(0.5));
+    w.colliders.insert(ColliderBuilder::new(floor).friction(friction));
+    w
+}
+
+/// The body's pose after 2 s dropped from 1 cm above the floor with its centre `offset` from the
+/// origin, turned by 0.001 rad, onto `floor`; `smooth` picks `SmoothDispatcher` (else rapier's
+/// default narrow phase).
+fn landed(shape: SharedShape, half_height: f64, offset: f64, floor: Polyline, smooth: bool) -> Pose {
+    let mut w = world_on(SharedShape::new(floor), 0.5, smooth);
     let (h, _) = w.insert(
         RigidBodyBuilder::dynamic()
             .translation(Vector::new(offset, half_height + 0.01))
@@ -164,13 +170,7 @@ fn rolled(
     floor: SharedShape,
     smooth: bool,
 ) -> (Vector, Vector) {
-    let narrow_phase = if smooth {
-        NarrowPhase::with_query_dispatcher(SmoothDispatcher::default())
-    } else {
-        NarrowPhase::new()
-    };
-    let mut w = World::new(narrow_phase);
-    w.colliders.insert(ColliderBuilder::new(floor).friction(0.5));
+    let mut w = world_on(floor, 0.5, smooth);
     let (h, _) = w.insert(
         RigidBodyBuilder::dynamic()
             .translation(Vector::new(-3.0, height))
@@ -317,13 +317,7 @@ fn a_car_on_this_crate_s_discs_drives_over_oriented_hills_as_on_parry_s_balls() 
         SharedShape::new(Polyline::with_flags(points, None, PolylineFlags::ORIENTED))
     };
     let drive = |wheel: SharedShape, smooth: bool| {
-        let narrow_phase = if smooth {
-            NarrowPhase::with_query_dispatcher(SmoothDispatcher::default())
-        } else {
-            NarrowPhase::new()
-        };
-        let mut w = World::new(narrow_phase);
-        w.colliders.insert(ColliderBuilder::new(hills()).friction(0.9));
+        let mut w = world_on(hills(), 0.9, smooth);
         let (chassis, _) = w.insert(
             RigidBodyBuilder::dynamic().translation(Vector::new(-8.0, 1.2)),
             ColliderBuilder::cuboid(0.8, 0.15),
