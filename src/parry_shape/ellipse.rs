@@ -140,8 +140,9 @@ impl Shape for Ellipse {
     /// gives rapier's broad phase pairs that cannot touch). The square roots are taken as they
     /// stand, not by `hypot` (glibc's is several times slower, and rapier asks for this box
     /// of every ellipse at every step): the semi-axes lie within the accepted length range and
-    /// a pose's (c, s) is a unit complex number, so the squares neither overflow nor underflow;
-    /// a pose that makes them overflow (not a rotation) takes `hypot`.
+    /// a pose's (c, s) is a unit complex number, so the sum of the squares cannot overflow, and
+    /// its larger term cannot underflow (at most one ulp from `hypot`); a pose that makes it
+    /// overflow (not a rotation) takes `hypot`.
     fn compute_aabb(&self, position: &Pose) -> Aabb {
         let (a, b) = (self.half_x(), self.half_y());
         let (c, s) = (position.rotation.re, position.rotation.im);
