@@ -137,11 +137,24 @@ impl Shape for Ellipse {
 
     /// The tight box of the posed ellipse: half-widths √(a²c² + b²s²) and √(a²s² + b²c²) for the
     /// rotation (c, s) (parry's default transforms the local box, up to √2 wider per axis, which
-    /// gives rapier's broad phase pairs that cannot touch).
+    /// gives rapier's broad phase pairs that cannot touch). The square roots are taken as they
+    /// stand, not by `hypot` (glibc's is several times slower, and rapier asks for this box
+    /// of every ellipse at every step): the semi-axes lie within the accepted length range and
+    /// a pose's (c, s) is a unit complex number, so the sum of the squares cannot overflow, and
+    /// its larger term cannot underflow (at most one ulp from `hypot`); a pose that makes it
+    /// overflow (not a rotation) takes `hypot`.
     fn compute_aabb(&self, position: &Pose) -> Aabb {
         let (a, b) = (self.half_x(), self.half_y());
         let (c, s) = (position.rotation.re, position.rotation.im);
-        let h = Vector::new((a * c).hypot(b * s), (a * s).hypot(b * c));
+        let root = |x: Real, y: Real| {
+            let r = (x * x + y * y).sqrt();
+            if r.is_finite() {
+                r
+            } else {
+                x.hypot(y)
+            }
+        };
+        let h = Vector::new(root(a * c, b * s), root(a * s, b * c));
         let t = position.translation;
         Aabb::new(t - h, t + h)
     }
