@@ -182,3 +182,46 @@ impl Shape for Ellipse {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use parry2d_f64::math::Rotation;
+
+    /// The half-widths `hypot` would give, for comparison.
+    fn hypot_half_widths(a: f64, b: f64, c: f64, s: f64) -> Vector {
+        Vector::new((a * c).hypot(b * s), (a * s).hypot(b * c))
+    }
+
+    #[test]
+    fn posed_box_is_within_one_ulp_of_hypot_for_rotations() {
+        let e = Ellipse::new(0.5, 0.2);
+        for k in 0..64 {
+            let angle = 0.1 * k as f64;
+            let pose = Pose::new(Vector::new(1.0, -2.0), angle);
+            let h = e.compute_aabb(&pose).half_extents();
+            let (c, s) = (pose.rotation.re, pose.rotation.im);
+            let want = hypot_half_widths(0.5, 0.2, c, s);
+            for (got, want) in [(h.x, want.x), (h.y, want.y)] {
+                // Half extents come back through (max − min)/2 about the translation: a few ulps
+                // of the translation on top of the half-width's own.
+                assert!(
+                    (got - want).abs() <= 8.0 * f64::EPSILON * 3.0,
+                    "angle {angle}: {got} vs {want}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn posed_box_of_a_pose_that_is_not_a_rotation_takes_hypot_where_squares_overflow() {
+        // Components of 1e200 (not a unit complex number): a·c squared overflows; `hypot` does not.
+        let e = Ellipse::new(1e50, 1.0);
+        let pose = Pose::from_parts(Vector::ZERO, Rotation::from_cos_sin_unchecked(1e200, 1e200));
+        let aabb = e.compute_aabb(&pose);
+        let want = hypot_half_widths(1e50, 1.0, 1e200, 1e200);
+        assert!(want.is_finite(), "the reference is finite");
+        assert_eq!(aabb.maxs, want);
+        assert_eq!(aabb.mins, -want);
+    }
+}
