@@ -6,7 +6,7 @@
 //! each call, by a wrapper that reads a clock around it; rapier's default CCD sweeps its shapes
 //! itself, so its casts do not show there).
 //!
-//! Run: `cargo run --release --example step_counts [family] [--watch]` (a family name with dashes
+//! Run: `cargo run --release --example step_counts -- [family] [--watch]` (a family name with dashes
 //! for spaces runs only it); environment: `ONLY=smooth` or `ONLY=rapier` runs one method (for a
 //! profiler: `ONLY=smooth valgrind --tool=callgrind target/release/examples/step_counts
 //! chain-box`, then `callgrind_annotate --inclusive=yes` for rapier's stages), `REPS=n` runs the

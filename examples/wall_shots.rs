@@ -1,8 +1,10 @@
-//! Shots of fast-spinning ellipses and rounded heptagons at a thin fixed wall in rapier, CCD on
+//! Shots of fast-spinning bodies (an ellipse, a rounded heptagon, the Appendix A capsule-ellipse
+//! and a sharp square) at a thin fixed wall in rapier, CCD on
 //! (the wall-shot scene of `tests/common/scenes.rs`), over a grid of speeds (100–1000 m/s) and
 //! spins (0 to ±600 rad/s), three ways:
 //!
-//! * **smooth**: this crate's shapes with `NarrowPhase::with_query_dispatcher(SmoothDispatcher)`;
+//! * **smooth**: this crate's shapes with
+//!   `NarrowPhase::with_query_dispatcher(SmoothDispatcher::default())`;
 //! * **rapier polygons**: the same shapes approximated by parry's polygons (a 32-gon inscribed in
 //!   the ellipse, `RoundConvexPolygon` for the heptagon), which rapier sweeps with its own routine,
 //!   and rapier's default narrow phase;

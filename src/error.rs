@@ -139,6 +139,17 @@ impl fmt::Display for ShapeError {
 
 impl std::error::Error for ShapeError {}
 
+/// Checks the bounding radii of a query's curves at its entry: each finite and > 0, else
+/// [`QueryError::Degenerate`] (a [`crate::BallCurve`] of radius 0, negative or NaN: its field is
+/// public; a user's curve reporting no size).
+pub(crate) fn curves_sized(radii: &[f64]) -> Result<(), QueryError> {
+    if radii.iter().all(|r| r.is_finite() && *r > 0.0) {
+        Ok(())
+    } else {
+        Err(QueryError::Degenerate)
+    }
+}
+
 /// Checks that `value` is finite, > 0 and within [`MIN_LENGTH`, `MAX_LENGTH`].
 pub(crate) fn positive(name: &'static str, value: f64) -> Result<f64, ShapeError> {
     if !value.is_finite() {

@@ -60,9 +60,9 @@
 //! ## What is here
 //!
 //! * **Shapes** (parry shapes: `SharedShape::new(shape)`): [`Ellipse`], [`RoundedPolygon`],
-//!   [`CapsuleEllipse`], [`CustomCurve`] (your [`ConvexCurve`]); [`BallCurve`] (parry's `Ball`
-//!   as a curve). Constructors `new` panic naming a bad parameter, `try_new` return a
-//!   [`ShapeError`].
+//!   [`CapsuleEllipse`], [`CustomCurve`] (your [`ConvexCurve`]). [`BallCurve`] is parry's `Ball`
+//!   as a curve for the free queries below, not a parry shape. Constructors `new` panic naming a
+//!   bad parameter, `try_new` return a [`ShapeError`].
 //! * **Queries**: [`stationary_distance`]; [`time_of_impact`] (traced:
 //!   [`time_of_impact_traced`]); [`shape_time_of_impact`] for any two convex parry shapes;
 //!   [`halfspace_distance`] and [`time_of_impact_halfspace`]; [`bounding_circles_part`]. Errors:

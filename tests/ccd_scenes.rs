@@ -145,7 +145,7 @@ fn no_body_goes_through_a_wall_nor_freezes_in_the_ccd_scene_suite() {
 
 /// With rapier's contact recycling off, every manifold is recomputed every step from the poses
 /// and velocities of that step: no body of any case goes through a wall or freezes, no NaN, no
-/// panic (`SmoothDispatcher` only; `cargo run --release --example ccd_scenes --no-recycling`
+/// panic (`SmoothDispatcher` only; `cargo run --release --example ccd_scenes -- --no-recycling`
 /// prints the table of both methods).
 #[test]
 fn no_body_goes_through_a_wall_nor_freezes_with_contact_recycling_off() {
@@ -158,7 +158,7 @@ fn no_body_goes_through_a_wall_nor_freezes_with_contact_recycling_off() {
 /// `ActiveHooks::MODIFY_SOLVER_CONTACTS` and no-op hooks (`()`), so that rapier never recycles
 /// their pairs (every other pair is recycled as usual, the recycle distance left at 0.05). No
 /// body of any case goes through a wall or freezes, no NaN, no panic (`SmoothDispatcher` only;
-/// `cargo run --release --example ccd_scenes --ccd-hooks` prints the table of both methods).
+/// `cargo run --release --example ccd_scenes -- --ccd-hooks` prints the table of both methods).
 #[test]
 fn no_body_freezes_when_the_ccd_bodies_have_active_hooks() {
     let cases = all_cases().into_iter().map(|c| Case { ccd_hooks: true, ..c });
@@ -189,7 +189,7 @@ fn no_body_freezes_when_only_the_spinning_bodies_lift_the_rotation_cap() {
 /// meets, the targets rapier's candidate search misses among them. Frozen: at
 /// most [`MAX_FROZEN`] cases in the wedge and [`MAX_FROZEN_WITH_PASS`] in the stack, the classes
 /// [`may_freeze`] names (`cargo run --release
-/// --example ccd_scenes --moving-pairs` prints the table of both methods, rapier's default
+/// --example ccd_scenes -- --moving-pairs` prints the table of both methods, rapier's default
 /// without the pass).
 #[test]
 fn with_the_moving_pairs_pass_no_swept_body_ends_deep_in_a_target_it_was_apart_from() {
@@ -232,7 +232,7 @@ fn with_the_moving_pairs_pass_no_swept_body_ends_deep_in_a_target_it_was_apart_f
 }
 
 /// The chain box and the chain terrain built as oriented (one-sided) polylines, as a game builds
-/// its level (`cargo run --release --example ccd_scenes chain-box --oriented-chains` prints the
+/// its level (`cargo run --release --example ccd_scenes -- chain-box --oriented-chains` prints the
 /// table of both methods): no body through a wall, none frozen, no NaN, no panic, every swept
 /// body's centre at least an eighth of its thickness off every fixed target; and a swept body
 /// apart from a segment at the step's start less than a quarter of its `ccd_thickness` inside it

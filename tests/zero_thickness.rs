@@ -181,40 +181,76 @@ fn a_thin_ellipse_wedged_past_the_apex_of_two_segments_is_pushed_back_into_the_w
 }
 
 /// A sliver (the suite's: 1 m long, its centroid 0.03 from its long side) meeting a `Polyline`
-/// wall with the tip of its long side, the side 0.3 rad off the wall: the part's manifold has
-/// the tip's contact and, in place of the side's far end (0.3 away, beyond the prediction: a
-/// speculative point rapier keeps only when the velocities close it, which a spin lifting that
-/// end does not), the sliver's core contact, which holds its centre whatever the spin (the
-/// chain box of the CCD scene suite, a sliver at 3000 m/s: frozen with the far end's point).
-/// A side resting flat on the wall (both ends within the prediction) keeps both ends.
+/// wall with the tip of its long side, the side 0.3 rad off the wall: the part has two
+/// manifolds, its points first — the tip's contact and the side's far end (0.3 away, beyond the
+/// prediction: a speculative point rapier keeps only when the velocities close it, a face that
+/// a spin turns into the wall) — and then the sliver's core contact, in a manifold of its own,
+/// which holds its centre whatever the spin (the chain box of the CCD scene suite, a sliver at
+/// 3000 m/s: frozen with the far end's point alone). Both manifolds carry the part's sub-shape
+/// id. A side resting flat on the wall (both ends within the prediction) keeps both ends and no
+/// core contact: one manifold. (Before the part had a second manifold, the core contact took the
+/// far end's place: a square tumbling onto a two-sided chain met its corner a step late.)
 #[test]
 fn a_polyline_part_holds_the_core_contact_of_a_body_whose_far_face_point_is_beyond_the_prediction() {
     use parry2d_f64::query::{ContactManifold, PersistentQueryDispatcher};
-    use smooth_ccd2d::RoundedPolygon;
+    use smooth_ccd2d::{__is_core_feature as is_core, RoundedPolygon};
     let sliver = RoundedPolygon::new(
         &[Vector::new(-0.5, 0.0), Vector::new(-0.25, 0.0), Vector::new(0.5, 0.125)],
         0.0,
     );
-    let wall = Polyline::new(vec![Vector::new(-10.0, 0.0), Vector::new(10.0, 0.0)], None);
+    let wall = Polyline::new(
+        vec![Vector::new(-10.0, 0.0), Vector::new(0.0, 0.0), Vector::new(10.0, 0.0)],
+        None,
+    );
     // The long side (−0.5, 0)–(0.5, 0.125) facing the wall (its outward normal turned down),
-    // turned by `tilt` from it, its end (−0.5, 0) on the wall and the body above.
+    // turned by `tilt` from it, its end (−0.5, 0) on the wall at x = 2 (the second segment)
+    // and the body above.
     let at = |tilt: f64| {
         let side = Vector::new(1.0, 0.125);
         let rot = parry2d_f64::math::Rotation::new(core::f64::consts::PI - tilt - side.y.atan2(side.x));
         let low = rot * Vector::new(-0.5, 0.0);
-        Pose::from_parts(Vector::new(0.0, 0.0) - low, rot)
+        Pose::from_parts(Vector::new(2.0, 0.0) - low, rot)
     };
-    let core = |tilt: f64| {
+    let d = SmoothDispatcher::default();
+    for (wall_first, tilt) in [(true, 0.3), (false, 0.3), (true, 0.0), (false, 0.0)] {
         let mut manifolds: Vec<ContactManifold<(), ()>> = Vec::new();
-        SmoothDispatcher::default()
-            .contact_manifolds(&at(tilt), &wall, &sliver, 0.002, &mut manifolds, &mut None)
+        let mut workspace = None;
+        // Twice, the second from the first's manifolds and workspace (rapier's next step).
+        for call in 0..2 {
+            if wall_first {
+                d.contact_manifolds(&at(tilt), &wall, &sliver, 0.002, &mut manifolds, &mut workspace)
+            } else {
+                d.contact_manifolds(
+                    &at(tilt).inverse(),
+                    &sliver,
+                    &wall,
+                    0.002,
+                    &mut manifolds,
+                    &mut workspace,
+                )
+            }
             .expect("answered");
-        let pts = &manifolds[0].points;
-        assert_eq!(pts.len(), 2, "tilt {tilt}: {pts:?}");
-        smooth_ccd2d::__is_core_feature(pts[1].fid2.0)
-    };
-    assert!(core(0.3), "tilted: the core contact is the second point");
-    assert!(!core(0.0), "flat: both ends of the side");
+            let what = format!("wall first {wall_first}, tilt {tilt}, call {call}: {manifolds:?}");
+            // One part reached (the second segment): its points, then its core where it has one.
+            assert_eq!(manifolds.len(), if tilt > 0.0 { 2 } else { 1 }, "{what}");
+            let part = |m: &ContactManifold<(), ()>| if wall_first { m.subshape1 } else { m.subshape2 };
+            assert!(manifolds.iter().all(|m| part(m) == 1), "{what}");
+            let fid = |p: &parry2d_f64::query::TrackedContact<()>| if wall_first { p.fid2.0 } else { p.fid1.0 };
+            let points = &manifolds[0].points;
+            assert_eq!(points.len(), 2, "{what}");
+            assert!(points.iter().all(|p| !is_core(fid(p))), "{what}");
+            let far = points.iter().map(|p| p.dist).fold(f64::NEG_INFINITY, f64::max);
+            if tilt > 0.0 {
+                let cores = &manifolds[1].points;
+                assert!(far > 0.2, "the far end kept: {what}");
+                assert_eq!(cores.len(), 1, "{what}");
+                assert!(is_core(fid(&cores[0])), "{what}");
+                assert_eq!(manifolds[1].local_n1, manifolds[0].local_n1, "{what}");
+            } else {
+                assert!(far <= 0.002, "{what}");
+            }
+        }
+    }
 }
 
 /// A thin body falling fast and spinning slowly is stopped by every wall as by a `Segment`
@@ -262,4 +298,159 @@ fn a_fast_thin_spinning_body_is_stopped_by_every_composite_wall_as_by_a_segment(
             }
         }
     }
+}
+
+/// The sliver of the CCD scene suite's chain box (a closed polyline, the square of side 10 about
+/// the origin), its tip pushed by a spin of thousands of rad/s 0.24 past the left wall just
+/// under the top-left corner, its centre inside and moving away from both walls (rapier's CCD
+/// motion of that step, 937 m/s right and 581 m/s down, at a tenth of its speed: the step's
+/// translation then stays inside the box). The exact contact of the left wall's
+/// segment is its end, the corner, inside the sliver, and a translation away from the wall takes
+/// that end deeper into the body: rule 3 on it answered a start contact at 3.6e-6 of the step on
+/// every step, and the sliver froze there with its velocity (found when the parts of a
+/// composite came to have two manifolds, which changed the suite's trajectories). The contact
+/// from the centre's side — the one the manifold hands rapier's solver, the tip 0.24 past the
+/// wall's line — rises as the body moves away: no hit from the wall alone, the segment or the
+/// whole box. Driven into the wall instead, the same pose is stopped where the tip has gone the
+/// allowance (a quarter of the sliver's inradius) deeper.
+#[test]
+fn a_body_whose_tip_is_past_a_polyline_corner_moves_away_from_the_walls_without_a_hit() {
+    use smooth_ccd2d::RoundedPolygon;
+    let sliver = RoundedPolygon::new(
+        &[Vector::new(-0.5, 0.0), Vector::new(-0.25, 0.0), Vector::new(0.5, 0.125)],
+        0.0,
+    );
+    let h = 5.0;
+    let corners = vec![
+        Vector::new(-h, -h),
+        Vector::new(h, -h),
+        Vector::new(h, h),
+        Vector::new(-h, h),
+    ];
+    let closed = Polyline::new(corners, Some(vec![[0, 1], [1, 2], [2, 3], [3, 0]]));
+    let left = Segment::new(Vector::new(-h, h), Vector::new(-h, -h));
+    let start = Pose::from_parts(
+        Vector::new(-4.723181169219112, 4.985461368345202),
+        parry2d_f64::math::Rotation::from_cos_sin_unchecked(-0.9995653339982303, -0.029481232487913404),
+    );
+    let centre = Vector::new(-0.08333333333333352, 0.04166666666666709);
+    let motion = |v: Vector| NonlinearRigidMotion::new(start, centre, v, 10.993200391483791);
+    let still = NonlinearRigidMotion::identity();
+    let d = SmoothDispatcher::default();
+    // The tip is past the left wall's line by 0.24 (the manifold's contact).
+    let tip = (start * Vector::new(0.5, 0.125)).x;
+    assert!(tip < -h - 0.2, "tip at x = {tip}");
+    let away = motion(Vector::new(93.74335566216045, -58.09257767207714));
+    for (name, wall) in [("left segment", &left as &dyn Shape), ("closed polyline", &closed)] {
+        let hit = d
+            .cast_shapes_nonlinear(&away, &sliver, &still, wall, 0.0, DT, false)
+            .expect("supported");
+        assert!(hit.is_none(), "{name}: {hit:?}");
+    }
+    // Driven into the left wall (and along it, down): stopped once the tip is the allowance
+    // deeper, a quarter of the sliver's inradius about its centre.
+    let into = motion(Vector::new(-30.0, -5.0));
+    let hit = d
+        .cast_shapes_nonlinear(&into, &sliver, &still, &left, 0.0, DT, false)
+        .expect("supported")
+        .expect("a hit");
+    // The inradius about the centroid: its distance to the nearest edge line.
+    let v = [Vector::new(-0.5, 0.0), Vector::new(-0.25, 0.0), Vector::new(0.5, 0.125)];
+    let inradius = (0..3)
+        .map(|k| {
+            let (a, b) = (v[k], v[(k + 1) % 3]);
+            let e = (b - a).normalize();
+            (centre - a).perp_dot(e).abs()
+        })
+        .fold(f64::INFINITY, f64::min);
+    let allowance = smooth_ccd2d::CastPolicy::ALLOWANCE * inradius;
+    // The tip's depth past x = −5 grows by what the centre moves left (the translation).
+    let deeper = 30.0 * hit.time_of_impact;
+    assert!(
+        (deeper - allowance).abs() < 1e-9 * allowance.max(1.0),
+        "{deeper} against {allowance}"
+    );
+}
+
+/// The same sliver turning from tilted to flat on the wall and back, one workspace across the
+/// calls (rapier's steps): the part's core manifold comes and goes after its manifold of points,
+/// whose points keep their data (rapier's impulses) by feature id throughout; the core contact's
+/// data is kept while its manifold stays.
+#[test]
+fn a_polyline_part_keeps_its_points_data_while_its_core_manifold_comes_and_goes() {
+    use parry2d_f64::query::{ContactManifold, PersistentQueryDispatcher};
+    use smooth_ccd2d::{__is_core_feature as is_core, RoundedPolygon};
+    let sliver = RoundedPolygon::new(
+        &[Vector::new(-0.5, 0.0), Vector::new(-0.25, 0.0), Vector::new(0.5, 0.125)],
+        0.0,
+    );
+    let wall = Polyline::new(vec![Vector::new(-10.0, 0.0), Vector::new(10.0, 0.0)], None);
+    let at = |tilt: f64| {
+        let side = Vector::new(1.0, 0.125);
+        let rot = parry2d_f64::math::Rotation::new(core::f64::consts::PI - tilt - side.y.atan2(side.x));
+        Pose::from_parts(-(rot * Vector::new(-0.5, 0.0)), rot)
+    };
+    let d = SmoothDispatcher::default();
+    let mut manifolds: Vec<ContactManifold<(), u32>> = Vec::new();
+    let mut workspace = None;
+    let mut stamp = 0u32;
+    for (call, tilt) in [0.3, 0.29, 0.0, 0.3, 0.31].into_iter().enumerate() {
+        d.contact_manifolds(&at(tilt), &wall, &sliver, 0.002, &mut manifolds, &mut workspace)
+            .expect("answered");
+        let what = format!("call {call}, tilt {tilt}: {manifolds:?}");
+        assert_eq!(manifolds.len(), if tilt > 0.0 { 2 } else { 1 }, "{what}");
+        assert!(manifolds.iter().all(|m| m.subshape1 == 0), "{what}");
+        // The tip (−0.5, 0) is the same feature in every call: its data is the last call's.
+        let tip = manifolds[0]
+            .points
+            .iter()
+            .min_by(|a, b| a.dist.total_cmp(&b.dist))
+            .expect("a point");
+        assert!(!is_core(tip.fid2.0), "{what}");
+        assert_eq!(tip.data, stamp, "{what}");
+        if tilt > 0.0 {
+            let core = &manifolds[1].points[0];
+            assert!(is_core(core.fid2.0), "{what}");
+            // Kept from the previous call only where the previous call had a core manifold.
+            let expected = if call == 0 || call == 3 { 0 } else { stamp };
+            assert_eq!(core.data, expected, "{what}");
+        }
+        stamp += 1;
+        for m in manifolds.iter_mut() {
+            for p in m.points.iter_mut() {
+                p.data = stamp;
+            }
+        }
+    }
+}
+
+/// A heightfield's part, as a polyline's: the sliver's tip on it, its long side 0.3 rad off:
+/// the part's two points (the far end 0.3 away), then its core contact in a manifold of its own,
+/// both with the part's sub-shape id; the part is a `Segment` (the contact from the side of the
+/// body's centre applies, as to a polyline's part).
+#[test]
+fn a_heightfield_part_keeps_the_far_point_and_its_core_contact_in_two_manifolds() {
+    use parry2d_f64::query::{ContactManifold, PersistentQueryDispatcher};
+    use smooth_ccd2d::{__is_core_feature as is_core, RoundedPolygon};
+    let sliver = RoundedPolygon::new(
+        &[Vector::new(-0.5, 0.0), Vector::new(-0.25, 0.0), Vector::new(0.5, 0.125)],
+        0.0,
+    );
+    let side = Vector::new(1.0, 0.125);
+    let rot = parry2d_f64::math::Rotation::new(core::f64::consts::PI - 0.3 - side.y.atan2(side.x));
+    let pos12 = Pose::from_parts(Vector::new(2.0, 0.0) - rot * Vector::new(-0.5, 0.0), rot);
+    let field = HeightField::new(vec![0.0, 0.0, 0.0], Vector::new(20.0, 1.0));
+    let mut manifolds: Vec<ContactManifold<(), ()>> = Vec::new();
+    SmoothDispatcher::default()
+        .contact_manifolds(&pos12, &field, &sliver, 0.002, &mut manifolds, &mut None)
+        .expect("answered");
+    let what = format!("{manifolds:?}");
+    let held: Vec<&ContactManifold<(), ()>> = manifolds.iter().filter(|m| !m.points.is_empty()).collect();
+    assert_eq!(held.len(), 2, "{what}");
+    assert!(held.iter().all(|m| m.subshape1 == 1), "{what}");
+    assert_eq!(held[0].points.len(), 2, "{what}");
+    assert!(held[0].points.iter().all(|p| !is_core(p.fid2.0)), "{what}");
+    assert!(held[0].points.iter().any(|p| p.dist > 0.2), "the far end: {what}");
+    assert_eq!(held[1].points.len(), 1, "{what}");
+    assert!(is_core(held[1].points[0].fid2.0), "{what}");
 }

@@ -24,6 +24,7 @@
 #[macro_export]
 macro_rules! composite_helpers {
     ($parry:ident, $dispatcher:path) => {
+        $crate::composite_part_manifolds!($parry, $dispatcher);
         use $parry::math::{Pose, Real, Vector};
         use $parry::query::details::{self, ShapeCastOptions};
         use $parry::query::{
@@ -617,6 +618,23 @@ macro_rules! composite_helpers {
                 (ShapeType::TriMesh, _) | (_, ShapeType::TriMesh) => {
                     details::contact_manifolds_trimesh_shape_shapes(d, pos12, g1, g2, prediction, manifolds, workspace);
                 }
+                // A heightfield against one of the crate's shapes or a user's curve: two manifolds
+                // a part, as a composite's below.
+                (ShapeType::HeightField, ShapeType::Custom)
+                    if composite2.is_none() && g1.as_heightfield().is_some() =>
+                {
+                    if let Some(hf1) = g1.as_heightfield() {
+                        heightfield_shape_part_manifolds(d, pos12, hf1, g2, prediction, manifolds, workspace, false);
+                    }
+                }
+                (ShapeType::Custom, ShapeType::HeightField)
+                    if composite1.is_none() && g2.as_heightfield().is_some() =>
+                {
+                    if let Some(hf2) = g2.as_heightfield() {
+                        let pos21 = pos12.inverse();
+                        heightfield_shape_part_manifolds(d, &pos21, hf2, g1, prediction, manifolds, workspace, true);
+                    }
+                }
                 (ShapeType::HeightField, _) => match (composite2, g1.as_heightfield()) {
                     (Some(c2), Some(hf1)) => details::contact_manifolds_heightfield_composite_shape(
                         d,
@@ -664,6 +682,19 @@ macro_rules! composite_helpers {
                         details::contact_manifolds_voxels_shape_shapes(
                             d, pos12, g1, g2, prediction, manifolds, workspace,
                         )
+                    }
+                }
+                // A composite against one of the crate's shapes or a user's curve: two manifolds
+                // a part, the core contact beside the points (`composite_part_manifolds!`).
+                (_, ShapeType::Custom) if composite1.is_some() && composite2.is_none() => {
+                    if let Some(c1) = composite1 {
+                        composite_shape_shape_part_manifolds(d, pos12, c1, g2, prediction, manifolds, workspace, false);
+                    }
+                }
+                (ShapeType::Custom, _) if composite2.is_some() && composite1.is_none() => {
+                    if let Some(c2) = composite2 {
+                        let pos21 = pos12.inverse();
+                        composite_shape_shape_part_manifolds(d, &pos21, c2, g1, prediction, manifolds, workspace, true);
                     }
                 }
                 _ => {

@@ -28,7 +28,10 @@
 //!   10⁻⁸ of their size into each other and its distances measured at the true pose.
 //! * **Composite shapes** (compound, polyline, trimesh, heightfield, voxels) on either side:
 //!   parry's composite helpers, called with *this* dispatcher so that every sub-pair comes back
-//!   here ([`PersistentQueryDispatcher::contact_manifold_convex_convex`]). Normal constraints
+//!   here ([`PersistentQueryDispatcher::contact_manifold_convex_convex`]); a polyline, compound,
+//!   heightfield or user's composite against one of the crate's shapes or a user's curve, the
+//!   dispatcher's own version of parry's helpers with two manifolds a part, the part's points and
+//!   its core contact (`super::part_cores`, [`SmoothDispatcher::part_manifolds`]). Normal constraints
 //!   (an oriented polyline's or a fixed-edge compound's pseudo-normals) are applied to the smooth contact's
 //!   normals, and a contact whose normal they moved is re-derived along the new one
 //!   ([`super::constrained`]: none where its line misses the part).
@@ -56,7 +59,7 @@
 use super::apart::{beyond_prediction, circles, circles_apart, far_apart};
 use super::composite::{composite_manifolds, is_composite_like};
 use super::core_disc::{
-    add_part_core, core_contact, core_disc_manifolds, core_manifold_of, core_of_shape, insert_core_point, CoreContact,
+    add_part_core, core_contact, core_disc_manifolds, core_manifold_of, core_of_shape, place_part_core, CoreContact,
 };
 use super::distance_manifold::manifold_from_distance;
 use super::input_guard;
@@ -86,6 +89,7 @@ fn manifold_from_contact<M, C: Default + Copy>(
     core: Option<CoreContact>,
     prediction: Real,
     manifold: &mut ContactManifold<M, C>,
+    own: Option<&mut ContactManifold<M, C>>,
 ) -> bool {
     let local2 = |p: Vector| pos12.inverse_transform_point(p);
     let n2 = pos12.inverse_transform_vector(-c.normal);
@@ -116,11 +120,18 @@ fn manifold_from_contact<M, C: Default + Copy>(
             ));
         }
     }
-    if let Some(k) = core {
-        insert_core_point(pos12, c.normal, k, prediction, manifold);
-    }
+    place_part_core(pos12, c.normal, core, prediction, manifold, own);
     manifold.match_contacts(&old[..n_old]);
     true
+}
+
+/// Where [`SmoothDispatcher::exact_manifold`] puts the core contacts of a pair.
+enum Cores<'a, M, C> {
+    /// A convex pair: each body's core in a manifold of its own (two manifolds).
+    Both(&'a mut [ContactManifold<M, C>]),
+    /// A part of a composite shape: the smaller body's core with the part's points, or beside
+    /// them in a manifold of its own where one is given ([`place_part_core`]).
+    Part(Option<&'a mut ContactManifold<M, C>>),
 }
 
 /// The dispatcher's guard around parry's manifolds: when `ok` is false (a bad pose or shape in,
@@ -181,7 +192,7 @@ impl SmoothDispatcher {
         g2: &dyn Shape,
         prediction: Real,
         manifold: &mut ContactManifold<M, C>,
-        cores: Option<&mut [ContactManifold<M, C>]>,
+        cores: Cores<M, C>,
     ) -> bool {
         // parry's own pairs (e.g. the parts of a compound) stay parry's.
         if g1.shape_type() != ShapeType::Custom && g2.shape_type() != ShapeType::Custom {
@@ -200,8 +211,9 @@ impl SmoothDispatcher {
             || (was_apart && beyond_prediction(s1, s2, pos12, &b, manifold.local_n1, prediction))
         {
             manifold.clear();
-            for m in cores.into_iter().flatten() {
-                m.clear();
+            match cores {
+                Cores::Both(m) => m.iter_mut().for_each(|m| m.clear()),
+                Cores::Part(m) => m.into_iter().for_each(|m| m.clear()),
             }
             return true;
         }
@@ -218,8 +230,8 @@ impl SmoothDispatcher {
         };
         match cores {
             // Each body's core, in a manifold of its own.
-            Some(m) => {
-                manifold_from_contact(pos12, &c, None, prediction, manifold)
+            Cores::Both(m) => {
+                manifold_from_contact(pos12, &c, None, prediction, manifold, None)
                     && core_disc_manifolds(
                         pos12,
                         [g1, g2],
@@ -230,8 +242,10 @@ impl SmoothDispatcher {
                         m,
                     )
             }
-            // One core, with the exact points (a part of a composite shape).
-            None => manifold_from_contact(pos12, &c, core_contact(s1, s2, k, pos12, &c), prediction, manifold),
+            // One core, with the exact points or beside them (a part of a composite shape).
+            Cores::Part(own) => {
+                manifold_from_contact(pos12, &c, core_contact(s1, s2, k, pos12, &c), prediction, manifold, own)
+            }
         }
     }
 }
@@ -286,7 +300,7 @@ where
             (m.subshape1, m.subshape2, m.subshape_poses) = (0, 0, None);
         }
         let (main, cores) = manifolds.split_at_mut(1);
-        if self.exact_manifold(pos12, g1, g2, prediction, &mut main[0], Some(cores)) {
+        if self.exact_manifold(pos12, g1, g2, prediction, &mut main[0], Cores::Both(cores)) {
             return Ok(());
         }
         let answer = self.curve_manifold(pos12, g1, g2, None, None, prediction, &mut main[0]);
@@ -308,19 +322,87 @@ where
         prediction: Real,
         manifold: &mut ContactManifold<M, C>,
     ) -> Result<(), Unsupported> {
-        let unconstrained = normal_constraints1.is_none() && normal_constraints2.is_none();
-        if unconstrained && self.exact_manifold(pos12, g1, g2, prediction, manifold, None) {
-            return Ok(());
+        let nc = [normal_constraints1, normal_constraints2];
+        self.part_manifold(pos12, g1, g2, nc, prediction, manifold, None)
+    }
+}
+
+impl SmoothDispatcher {
+    /// The manifolds of a part of a composite shape against a convex shape (`g1`, `g2`, their
+    /// normal constraints `nc`) as the dispatcher's own bookkeeping of a composite takes them,
+    /// two a part: the part's points in `manifold`, and in `core` the smaller body's core
+    /// contact where it would otherwise take the place of the second point (module docs of
+    /// `core_disc`, `place_part_core`). `contact_manifold_convex_convex` with a manifold for the
+    /// core. Not a public API: the composite helpers of both packages call it.
+    #[doc(hidden)]
+    #[allow(clippy::too_many_arguments)]
+    pub fn part_manifolds<M, C>(
+        &self,
+        pos12: &Pose,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+        nc: [Option<&dyn NormalConstraints>; 2],
+        prediction: Real,
+        manifold: &mut ContactManifold<M, C>,
+        core: &mut ContactManifold<M, C>,
+    ) -> Result<(), Unsupported>
+    where
+        M: Default + Clone + Send + Sync,
+        C: Default + Copy + Send + Sync,
+    {
+        let answer = self.part_manifold(pos12, g1, g2, nc, prediction, manifold, Some(&mut *core));
+        if answer.is_err() {
+            core.clear();
         }
+        answer
+    }
+
+    /// `contact_manifold_convex_convex` of a part, its core placed by `place_part_core` (`own`:
+    /// the part's manifold for it, if any).
+    #[allow(clippy::too_many_arguments)]
+    fn part_manifold<M, C>(
+        &self,
+        pos12: &Pose,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+        [nc1, nc2]: [Option<&dyn NormalConstraints>; 2],
+        prediction: Real,
+        manifold: &mut ContactManifold<M, C>,
+        own: Option<&mut ContactManifold<M, C>>,
+    ) -> Result<(), Unsupported>
+    where
+        M: Default + Clone + Send + Sync,
+        C: Default + Copy + Send + Sync,
+    {
+        let unconstrained = nc1.is_none() && nc2.is_none();
+        let own = match own {
+            Some(m) if unconstrained => {
+                // Reborrowed for the exact path; handed on below when it declines.
+                if self.exact_manifold(pos12, g1, g2, prediction, manifold, Cores::Part(Some(&mut *m))) {
+                    return Ok(());
+                }
+                Some(m)
+            }
+            None if unconstrained && self.exact_manifold(pos12, g1, g2, prediction, manifold, Cores::Part(None)) => {
+                return Ok(());
+            }
+            own => own,
+        };
         let (old, n_old) = parry_pairs::previous_points(&manifold.points);
-        let (nc1, nc2) = (normal_constraints1, normal_constraints2);
-        self.curve_manifold(pos12, g1, g2, nc1, nc2, prediction, manifold)?;
+        if let Err(e) = self.curve_manifold(pos12, g1, g2, nc1, nc2, prediction, manifold) {
+            if let Some(m) = own {
+                m.clear();
+            }
+            return Err(e);
+        }
         // A part of a composite shape (parry's composite helpers call this method for each): the
         // smaller body's core contact with the points, as the exact path gives it, its impulse
         // kept from the previous points; parry's own pairs keep parry's manifold to the bit.
         if own_curve(g1).is_some() || own_curve(g2).is_some() {
-            add_part_core(pos12, g1, g2, prediction, manifold);
+            add_part_core(pos12, g1, g2, prediction, manifold, own);
             manifold.match_contacts(&old[..n_old]);
+        } else if let Some(m) = own {
+            m.clear();
         }
         Ok(())
     }

@@ -63,6 +63,7 @@ pub(crate) mod input_guard;
 mod manifold;
 pub(crate) mod parry_fallback;
 mod parry_pairs;
+mod part_cores;
 mod queries;
 pub(crate) mod rapier_rule;
 pub(crate) mod route;

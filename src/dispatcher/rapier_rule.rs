@@ -29,7 +29,9 @@
 //!    of its radius deeper a step, never past half of it: `core_level`). And the translation
 //!    alone (the motion without its spin) may deepen the contact by at most the *allowance*
 //!    [`CastPolicy::ALLOWANCE`]·r a step, below the start's depth, so a body driven into a
-//!    wall is stopped and one sliding or resting on it moves freely. The answer is the earlier of the two, at least
+//!    wall is stopped and one sliding or resting on it moves freely (against a `Segment`, on
+//!    the contact from the side of the body's centre that the manifold gives the solver:
+//!    `centre_side`). The answer is the earlier of the two, at least
 //!    [`CastPolicy::START_NUDGE`] of the window after the start (rapier would discard the start
 //!    itself), or no hit.
 //!
@@ -317,7 +319,13 @@ pub(crate) fn start_contact_answer(
     let allowance = CastPolicy::ALLOWANCE * r.max(CastPolicy::START_CONTACT_GAP * size);
     let target = (-allowance).min(d0 - allowance);
     let (m1, m2) = (spinless_from(c.m1, c.t0), spinless_from(c.m2, c.t0));
-    let t_trans = if c.spin_at_start {
+    let side = k0.as_ref().and_then(|k| centre_side(c, k));
+    let t_trans = if let (false, Some(k)) = (c.spin_at_start, side) {
+        // A wall of no thickness with the body's centre on one side: the contact the manifold
+        // gives the solver (`segment_side`), whose depth the translation changes linearly.
+        let target = (-allowance).min(k.dist - allowance);
+        Ok(line_time_to_level(c, &k, target))
+    } else if c.spin_at_start {
         // The whole motions, rotation included, down to the same level.
         if out_of_reach(c, d0, target) {
             Ok(None)
@@ -388,6 +396,36 @@ pub(crate) fn start_contact_answer(
         },
     };
     toi_to_parry(earliest.map(|t| hit_at(c, t.max(nudge), d0)).transpose())
+}
+
+/// The start contact `k0` of a cast with a `Segment` (a wall of no thickness: standalone, or a
+/// part of a polyline) taken from the side of the other body's centre, where it differs from
+/// the exact contact (`segment_side`): the contact the manifold hands rapier's solver. The
+/// exact contact of a body whose tip a spin has pushed past a wall near its end (past the
+/// corner of a box of segments) is the segment's end inside the body, which a translation
+/// *away* from the wall takes deeper; rule 3 on it stopped such a body at the start of every
+/// step while the solver, on the contact from the centre's side, saw it leaving.
+fn centre_side(c: &NonlinearCast, k0: &Contact) -> Option<Contact> {
+    use parry2d_f64::shape::Segment;
+    if c.g1.as_shape::<Segment>().is_none() && c.g2.as_shape::<Segment>().is_none() {
+        return None;
+    }
+    let pos12 = super::cast::pos12_at(c.m1, c.m2, c.t0);
+    super::segment_side::centre_side_contact(k0, &pos12, c.g1, c.g2, c.m1.local_center, c.m2.local_center)
+}
+
+/// The first time in the window at which the translations of the cast (its motions without
+/// their spins) take the contact `k` from the centre's side ([`centre_side`], body 1's frame at
+/// the start) down to `level`: its depth is how far the body reaches past the wall's line, its
+/// support point along the line's normal fixed while it does not turn, so the signed distance
+/// is d(t) = d₀ + ((R₁ᵀ(v₂ − v₁))·n)(t − t₀), R₁ body 1's rotation at the start, n the normal.
+/// `None` when it stays above the level over the window (a body moving along or away from the
+/// wall).
+fn line_time_to_level(c: &NonlinearCast, k: &Contact, level: Real) -> Option<Real> {
+    let r1 = c.m1.position_at_time(c.t0).rotation;
+    let rate = (r1.inverse() * (c.m2.linvel - c.m1.linvel)).dot(k.normal);
+    let dt = (level - k.dist) / rate;
+    (rate < 0.0 && dt <= c.t1 - c.t0).then(|| c.t0 + dt.max(0.0))
 }
 
 /// The level the core's signed distance may come down to in a step (rule 3 of the module

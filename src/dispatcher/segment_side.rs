@@ -35,9 +35,24 @@ pub(crate) fn from_centre_side(
     centre1: Vector,
     centre2: Vector,
 ) -> Contact {
+    centre_side_contact(&c, pos12, g1, g2, centre1, centre2).unwrap_or(c)
+}
+
+/// The contact from the centre's side of [`from_centre_side`] where it differs from the exact
+/// contact `c` (module docs), `None` where `c` stands: neither shape a `Segment`, the centre not
+/// over the segment, a contact along the segment's normal, or a body not reaching past the
+/// line over the segment.
+pub(crate) fn centre_side_contact(
+    c: &Contact,
+    pos12: &Pose,
+    g1: &dyn Shape,
+    g2: &dyn Shape,
+    centre1: Vector,
+    centre2: Vector,
+) -> Option<Contact> {
     if let Some(seg) = g1.as_shape::<Segment>() {
         // The body is shape 2, at pos12 in the segment's frame.
-        one_sided(seg, g2, pos12, pos12 * centre2, c.normal).map_or(c, |(normal, dist, on_seg, on_body)| Contact {
+        one_sided(seg, g2, pos12, pos12 * centre2, c.normal).map(|(normal, dist, on_seg, on_body)| Contact {
             dist,
             normal,
             points: [point(on_seg, on_body, dist, Feature::Face(0), Feature::Vertex(0)); 2],
@@ -46,8 +61,7 @@ pub(crate) fn from_centre_side(
     } else if let Some(seg) = g2.as_shape::<Segment>() {
         // The body is shape 1; work in the segment's frame and come back.
         let pos21 = pos12.inverse();
-        one_sided(seg, g1, &pos21, pos21 * centre1, pos21.rotation * -c.normal).map_or(
-            c,
+        one_sided(seg, g1, &pos21, pos21 * centre1, pos21.rotation * -c.normal).map(
             |(normal, dist, on_seg, on_body)| {
                 let (on_seg, on_body) = (*pos12 * on_seg, *pos12 * on_body);
                 Contact {
@@ -59,7 +73,7 @@ pub(crate) fn from_centre_side(
             },
         )
     } else {
-        c
+        None
     }
 }
 

@@ -48,6 +48,7 @@ pub fn halfspace_distance(
     if !(pos12.is_finite() && hs.normal.is_finite()) {
         return Err(QueryError::NonFinite);
     }
+    crate::error::curves_sized(&[curve.bounding_radius()])?;
     // Work in the curve's frame: pos_hc = pose of the half-space in the curve's frame.
     let pos_hc = if curve_first { *pos12 } else { pos12.inverse() };
     let n = pos_hc.rotation.transform_vector(hs.normal);
@@ -200,6 +201,7 @@ fn toi_halfspace(
     if t1 < t0 {
         return Err(QueryError::EmptyWindow);
     }
+    crate::error::curves_sized(&[curve.bounding_radius()])?;
     let size = curve.bounding_radius();
     let tol = opts.distance_tolerance * size;
     let delta = opts.target_distance;

@@ -285,6 +285,7 @@ pub(crate) fn stationary_in_frame<A: ConvexCurve + ?Sized, B: ConvexCurve + ?Siz
     if !obj2.is_strictly_convex() {
         return Err(QueryError::NotStrictlyConvex);
     }
+    crate::error::curves_sized(&[obj1.bounding_radius(), obj2.bounding_radius()])?;
     let size = obj1.bounding_radius().max(obj2.bounding_radius());
     let mut sv = Solver {
         obj1,

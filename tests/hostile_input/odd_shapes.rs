@@ -331,3 +331,65 @@ fn a_flat_triangle_answers_as_the_segment_it_is() {
     println!("{casts} casts against flat triangles, {hits} hits, each equal to the segment's");
     assert!(hits > 20, "{hits}");
 }
+
+/// Found by a first-hour read of the docs (2026-11-29): `BallCurve`'s radius is a public field,
+/// and a radius of −1 gave `stationary_distance` 3.5 and `time_of_impact` `NoHit`, a radius of 0
+/// a `Hit`, where `QueryError::Degenerate` is documented. Every free query now refuses a curve
+/// whose bounding radius is not finite and positive; the constructors refuse such a radius.
+#[test]
+fn a_ball_curve_of_no_or_negative_radius_is_degenerate_in_every_free_query() {
+    use smooth_ccd2d::{bounding_circles_part, halfspace_distance, BallCurve};
+    let e = Ellipse::new(0.5, 0.2);
+    let pos12 = Pose::translation(4.0, 0.0);
+    let m1 = NonlinearRigidMotion::new(Pose::IDENTITY, Vector::ZERO, Vector::new(10.0, 0.0), 0.0);
+    let m2 = NonlinearRigidMotion::new(pos12, Vector::ZERO, Vector::ZERO, 0.0);
+    let hs = HalfSpace::new(Vector::Y);
+    for radius in [-1.0, 0.0, -0.0, f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+        let b = BallCurve { radius };
+        let d = stationary_distance(&e, &b, &pos12, &DistanceOptions::default());
+        assert_eq!(
+            d.err(),
+            Some(smooth_ccd2d::QueryError::Degenerate),
+            "stationary_distance, radius {radius}"
+        );
+        let d = stationary_distance(&b, &e, &pos12, &DistanceOptions::default());
+        assert_eq!(
+            d.err(),
+            Some(smooth_ccd2d::QueryError::Degenerate),
+            "stationary_distance swapped, radius {radius}"
+        );
+        let t = time_of_impact(&e, &m1, &b, &m2, 0.0, 1.0, &ToiOptions::default());
+        assert_eq!(
+            t.err(),
+            Some(smooth_ccd2d::QueryError::Degenerate),
+            "time_of_impact, radius {radius}"
+        );
+        let t = time_of_impact(&b, &m2, &e, &m1, 0.0, 1.0, &ToiOptions::default());
+        assert_eq!(
+            t.err(),
+            Some(smooth_ccd2d::QueryError::Degenerate),
+            "time_of_impact swapped, radius {radius}"
+        );
+        let h = halfspace_distance(&b, &hs, &pos12, true);
+        assert_eq!(
+            h.err(),
+            Some(smooth_ccd2d::QueryError::Degenerate),
+            "halfspace_distance, radius {radius}"
+        );
+        let h = time_of_impact_halfspace(&b, &m1, &hs, &m2, 0.0, 1.0, &ToiOptions::default());
+        assert_eq!(
+            h.err(),
+            Some(smooth_ccd2d::QueryError::Degenerate),
+            "time_of_impact_halfspace, radius {radius}"
+        );
+        assert!(
+            !bounding_circles_part(&e, &m1, &b, &m2, 0.0, 1.0, 0.0),
+            "bounding_circles_part, radius {radius}"
+        );
+        assert!(BallCurve::try_new(radius).is_err(), "try_new, radius {radius}");
+    }
+    // A valid radius answers as before.
+    let b = BallCurve::new(0.5);
+    let d = stationary_distance(&e, &b, &pos12, &DistanceOptions::default()).unwrap();
+    assert!((d.distance - 3.0).abs() < 1e-12);
+}

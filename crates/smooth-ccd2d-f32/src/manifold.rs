@@ -233,3 +233,52 @@ where
         Ok(())
     }
 }
+
+impl SmoothDispatcher {
+    /// `smooth_ccd2d::SmoothDispatcher::part_manifolds` in f32: the manifolds of a part of a
+    /// composite shape against a convex shape as the composite bookkeeping of
+    /// `composite_helpers!` takes them (the part's points, then its core contact where it would
+    /// otherwise take the second point's place), widened to f64, answered by the core and rounded
+    /// back as `contact_manifold_convex_convex` does; parry2d's pairs as that method answers
+    /// them, with no core contact. Not a public API.
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn part_manifolds<M, C>(
+        &self,
+        pos12: &Pose,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+        [nc1, nc2]: [Option<&dyn NormalConstraints>; 2],
+        prediction: Real,
+        manifold: &mut ContactManifold<M, C>,
+        core: &mut ContactManifold<M, C>,
+    ) -> Result<(), Unsupported>
+    where
+        M: Default + Clone + Send + Sync,
+        C: Default + Copy + Send + Sync,
+    {
+        let Some((a, b)) = widen_pair(g1, g2) else {
+            core.clear();
+            return self.contact_manifold_convex_convex(pos12, g1, g2, nc1, nc2, prediction, manifold);
+        };
+        let (mut wide, mut wide_core) = (widened(manifold), widened(core));
+        let answered = widened_constraint(nc1, |nc1| {
+            widened_constraint(nc2, |nc2| {
+                self.core.part_manifolds(
+                    &pose64(pos12),
+                    a.get(),
+                    b.get(),
+                    [nc1, nc2],
+                    prediction as f64,
+                    &mut wide,
+                    &mut wide_core,
+                )
+            })
+        });
+        if answered.is_err() || !(round_into(&wide, manifold) && round_into(&wide_core, core)) {
+            manifold.clear();
+            core.clear();
+            return Err(Unsupported);
+        }
+        Ok(())
+    }
+}

@@ -578,3 +578,55 @@ fn an_oriented_chain_holds_an_ellipse_near_its_inner_vertex_by_one_point_in_f32(
     assert_eq!(holding(PolylineFlags::empty()), vec![19, 20]);
     assert_eq!(holding(PolylineFlags::ORIENTED), vec![20]);
 }
+
+/// A polyline's and a heightfield's part against this package's sliver in f32, its long side
+/// tilted 0.3 rad off the wall with its tip on it: the part's points (the tip and the side's
+/// far end, 0.3 away) and, in a manifold of its own after them, the sliver's core contact, both
+/// with the part's sub-shape id (`tests/zero_thickness.rs` in f64).
+#[test]
+fn a_chain_part_keeps_the_far_point_and_its_core_contact_in_two_manifolds_in_f32() {
+    use parry2d::query::{ContactManifold, PersistentQueryDispatcher};
+    use parry2d::shape::Polyline;
+    let sliver = RoundedPolygon::new(
+        &[Vector::new(-0.5, 0.0), Vector::new(-0.25, 0.0), Vector::new(0.5, 0.125)],
+        0.0,
+    );
+    let side = Vector::new(1.0, 0.125);
+    let rot = parry2d::math::Rotation::new(core::f32::consts::PI - 0.3 - side.y.atan2(side.x));
+    let pos12 = Pose::from_parts(Vector::new(2.0, 0.0) - rot * Vector::new(-0.5, 0.0), rot);
+    let walls: [Box<dyn Shape>; 2] = [
+        Box::new(Polyline::new(
+            vec![Vector::new(-10.0, 0.0), Vector::new(0.0, 0.0), Vector::new(10.0, 0.0)],
+            None,
+        )),
+        Box::new(HeightField::new(vec![0.0, 0.0, 0.0], Vector::new(20.0, 1.0))),
+    ];
+    for wall in &walls {
+        let mut manifolds: Vec<ContactManifold<(), ()>> = Vec::new();
+        PersistentQueryDispatcher::<(), ()>::contact_manifolds(
+            &SmoothDispatcher::default(),
+            &pos12,
+            &**wall,
+            &sliver,
+            0.002,
+            &mut manifolds,
+            &mut None,
+        )
+        .expect("supported");
+        let what = format!("{:?}: {manifolds:?}", wall.shape_type());
+        let held: Vec<&ContactManifold<(), ()>> = manifolds.iter().filter(|m| !m.points.is_empty()).collect();
+        assert_eq!(held.len(), 2, "{what}");
+        assert_eq!(held[0].subshape1, held[1].subshape1, "{what}");
+        assert_eq!(held[0].points.len(), 2, "{what}");
+        assert!(
+            held[0]
+                .points
+                .iter()
+                .all(|p| !smooth_ccd2d::__is_core_feature(p.fid2.0)),
+            "{what}"
+        );
+        assert!(held[0].points.iter().any(|p| p.dist > 0.2), "the far end: {what}");
+        assert_eq!(held[1].points.len(), 1, "{what}");
+        assert!(smooth_ccd2d::__is_core_feature(held[1].points[0].fid2.0), "{what}");
+    }
+}

@@ -52,8 +52,8 @@ pub(crate) fn circles_stay_apart(offset: Vector, velocity: Vector, span: f64, re
 /// miss (parry's casts report none) can skip the query. The circles move with the rotation
 /// centres, whose relative motion is linear, so the test is the closest approach of two points.
 ///
-/// False whenever anything is non-finite or the window is reversed: the query itself then
-/// reports the error.
+/// False whenever anything is non-finite, a bounding radius is not positive or the window is
+/// reversed: the query itself then reports the error.
 pub fn bounding_circles_part(
     shape1: &dyn ConvexCurve,
     motion1: &NonlinearRigidMotion,
@@ -63,7 +63,8 @@ pub fn bounding_circles_part(
     end_time: f64,
     target_distance: f64,
 ) -> bool {
-    if !(motion_is_finite(motion1) && motion_is_finite(motion2) && start_time <= end_time) {
+    let sized = crate::error::curves_sized(&[shape1.bounding_radius(), shape2.bounding_radius()]).is_ok();
+    if !(sized && motion_is_finite(motion1) && motion_is_finite(motion2) && start_time <= end_time) {
         return false;
     }
     let reach = circles_reach(

@@ -104,6 +104,9 @@ impl<'a, A: ConvexCurve + ?Sized, B: ConvexCurve + ?Sized> Tracker<'a, A, B> {
             RelativeMotion::new(m1, m2)
         }
         .with_clock(clock);
+        // Each curve's bounding radius finite and positive (a `BallCurve` of radius −1 beside a
+        // positive one passed a test of the larger alone), after the window's checks.
+        crate::error::curves_sized(&[obj1.bounding_radius(), obj2.bounding_radius()])?;
         let size = obj1.bounding_radius().max(obj2.bounding_radius());
         let (c1, c2) = rel.centers();
         let reach = circles_reach(
