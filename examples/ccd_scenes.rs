@@ -27,8 +27,51 @@ mod common;
 use common::ccd_judge::{run_all, table};
 use common::ccd_scenes::{all_cases, Method};
 
+/// The flags the example takes (module docs).
+const FLAGS: [&str; 6] = [
+    "--no-recycling",
+    "--ccd-hooks",
+    "--rotation-cap-kept",
+    "--moving-pairs",
+    "--oriented-chains",
+    "--recycle-distance=D",
+];
+
+/// Exits with the example's usage: status 0 for `--help`, 2 for a mistake (`why`).
+fn usage(why: Option<String>) -> ! {
+    let families: Vec<String> = all_cases().iter().map(|c| c.family.name().replace(' ', "-")).collect();
+    let mut families = families;
+    families.dedup();
+    if let Some(why) = &why {
+        eprintln!("{why}");
+    }
+    eprintln!(
+        "usage: cargo run --release --example ccd_scenes -- [FAMILY] [{}]\nfamilies: {}",
+        FLAGS.join("] ["),
+        families.join(", ")
+    );
+    std::process::exit(if why.is_some() { 2 } else { 0 });
+}
+
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
+    if args.iter().any(|a| a == "--help" || a == "-h") {
+        usage(None);
+    }
+    for a in args.iter().filter(|a| a.starts_with('-')) {
+        let known = FLAGS.iter().any(|f| match f.strip_suffix('D') {
+            Some(prefix) => a.starts_with(prefix),
+            None => a == f,
+        });
+        if !known {
+            usage(Some(format!("unknown option `{a}`")));
+        }
+    }
+    if let Some(f) = args.iter().find(|a| !a.starts_with('-')) {
+        if !all_cases().iter().any(|c| c.family.name().replace(' ', "-") == *f) {
+            usage(Some(format!("unknown family `{f}`")));
+        }
+    }
     // `--no-recycling`: rapier's contact recycling off (`IntegrationParameters::contact_recycling`).
     let recycling = !args.iter().any(|a| a == "--no-recycling");
     // `--recycle-distance=D`: rapier's `normalized_contact_recycle_distance` (0.05 by default).

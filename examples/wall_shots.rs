@@ -102,7 +102,8 @@ struct Outcome {
     tunnelled: bool,
     /// Index into `poses` of the first contact, and the depth there.
     first_contact: Option<(usize, f64)>,
-    /// Largest depth over the whole run.
+    /// Largest depth over the whole run at the poses whose deepest point is over the wall's face
+    /// (within its height: a body slid along the face and past its end is not in the wall).
     max_depth: f64,
 }
 
@@ -129,11 +130,23 @@ fn run(kind: ShotBody, method: ShotMethod, shot: Shot) -> Outcome {
     } else {
         depths.iter().position(|&d| d >= -CONTACT_TOL).map(|k| (k, depths[k]))
     };
+    let over_wall = |p: &Pose| {
+        let deepest = shape
+            .as_support_map()
+            .expect("a support map")
+            .support_point(p, Vector::X);
+        deepest.y.abs() <= WALL_HALF_HEIGHT
+    };
+    let max_depth = poses
+        .iter()
+        .zip(&depths)
+        .filter(|(p, _)| over_wall(p))
+        .fold(f64::NEG_INFINITY, |m, (_, &d)| m.max(d));
     Outcome {
         poses,
         tunnelled,
         first_contact,
-        max_depth: depths.iter().fold(f64::NEG_INFINITY, |m, &d| m.max(d)),
+        max_depth,
     }
 }
 
@@ -173,11 +186,17 @@ fn main() {
          dt = 1/60 s, CCD on, {STEPS} steps per shot",
         SPEEDS, SPINS
     );
-    println!("depth = how far the shape's deepest point is past the wall face at the first contact step (< 0: short)");
-    println!("max depth run = the largest depth over the whole shot (after the impact too: spinning against the wall)");
+    println!(
+        "depth (m) = how far the shape's deepest point is past the wall face at the first contact step (< 0: short); \
+         worst and least over the shots that did not tunnel"
+    );
+    println!(
+        "deepest run (m) = the largest depth over the whole shot, after the impact too (spinning against the wall), \
+         while the deepest point is over the wall's face (not past its end)"
+    );
     println!(
         "{:<24} {:<18} {:>5} {:>10} {:>12} {:>12} {:>14} {:>8}",
-        "shape", "method", "shots", "tunnelled", "worst depth", "most short", "max depth run", "time s"
+        "shape", "method", "shots", "tunnelled", "worst depth", "least depth", "deepest run", "time s"
     );
     for r in &rows {
         let tunnelled = r.outcomes.iter().filter(|o| o.tunnelled).count();
@@ -215,6 +234,26 @@ fn main() {
                 kind_name(r.kind),
                 method_name(r.method),
                 through.join(", ")
+            );
+        }
+    }
+
+    // Where this crate's deepest run is: the shot, for the docs.
+    for r in rows.iter().filter(|r| r.method == ShotMethod::Smooth) {
+        let deepest = r
+            .outcomes
+            .iter()
+            .zip(&shots)
+            .filter(|(o, _)| !o.tunnelled)
+            .max_by(|a, b| a.0.max_depth.total_cmp(&b.0.max_depth));
+        if let Some((o, s)) = deepest {
+            println!(
+                "deepest run ({}, {}): {:.3e} m at {}/{:+.0} (speed m/s / spin rad/s)",
+                kind_name(r.kind),
+                method_name(r.method),
+                o.max_depth,
+                s.speed,
+                s.spin
             );
         }
     }

@@ -52,6 +52,23 @@ fn disc_motion(depth: f64, v: Vector) -> NonlinearRigidMotion {
     NonlinearRigidMotion::new(Pose::translation(0.3, 0.2 - depth), Vector::ZERO, v, 4.0)
 }
 
+/// The CCD scene suite's sliver: 1 m long, a sharp triangle whose long side runs from its tip
+/// (−0.5, 0) to (0.5, 0.125), its centroid 0.03 from that side.
+fn sliver() -> smooth_ccd2d::RoundedPolygon {
+    smooth_ccd2d::RoundedPolygon::new(
+        &[Vector::new(-0.5, 0.0), Vector::new(-0.25, 0.0), Vector::new(0.5, 0.125)],
+        0.0,
+    )
+}
+
+/// The sliver's pose with its tip (−0.5, 0) at (x, 0) on the wall y = 0 and its long side facing
+/// the wall, turned `tilt` off it (the body above the wall).
+fn tip_on_wall(x: f64, tilt: f64) -> Pose {
+    let side = Vector::new(1.0, 0.125);
+    let rot = parry2d_f64::math::Rotation::new(core::f64::consts::PI - tilt - side.y.atan2(side.x));
+    Pose::from_parts(Vector::new(x, 0.0) - rot * Vector::new(-0.5, 0.0), rot)
+}
+
 #[test]
 fn walls_of_no_thickness_have_parrys_zero_ccd_thickness() {
     for (name, wall) in walls() {
@@ -193,11 +210,8 @@ fn a_thin_ellipse_wedged_past_the_apex_of_two_segments_is_pushed_back_into_the_w
 #[test]
 fn a_polyline_part_holds_the_core_contact_of_a_body_whose_far_face_point_is_beyond_the_prediction() {
     use parry2d_f64::query::{ContactManifold, PersistentQueryDispatcher};
-    use smooth_ccd2d::{__is_core_feature as is_core, RoundedPolygon};
-    let sliver = RoundedPolygon::new(
-        &[Vector::new(-0.5, 0.0), Vector::new(-0.25, 0.0), Vector::new(0.5, 0.125)],
-        0.0,
-    );
+    use smooth_ccd2d::__is_core_feature as is_core;
+    let sliver = sliver();
     let wall = Polyline::new(
         vec![Vector::new(-10.0, 0.0), Vector::new(0.0, 0.0), Vector::new(10.0, 0.0)],
         None,
@@ -205,12 +219,7 @@ fn a_polyline_part_holds_the_core_contact_of_a_body_whose_far_face_point_is_beyo
     // The long side (−0.5, 0)–(0.5, 0.125) facing the wall (its outward normal turned down),
     // turned by `tilt` from it, its end (−0.5, 0) on the wall at x = 2 (the second segment)
     // and the body above.
-    let at = |tilt: f64| {
-        let side = Vector::new(1.0, 0.125);
-        let rot = parry2d_f64::math::Rotation::new(core::f64::consts::PI - tilt - side.y.atan2(side.x));
-        let low = rot * Vector::new(-0.5, 0.0);
-        Pose::from_parts(Vector::new(2.0, 0.0) - low, rot)
-    };
+    let at = |tilt: f64| tip_on_wall(2.0, tilt);
     let d = SmoothDispatcher::default();
     for (wall_first, tilt) in [(true, 0.3), (false, 0.3), (true, 0.0), (false, 0.0)] {
         let mut manifolds: Vec<ContactManifold<(), ()>> = Vec::new();
@@ -315,11 +324,7 @@ fn a_fast_thin_spinning_body_is_stopped_by_every_composite_wall_as_by_a_segment(
 /// allowance (a quarter of the sliver's inradius) deeper.
 #[test]
 fn a_body_whose_tip_is_past_a_polyline_corner_moves_away_from_the_walls_without_a_hit() {
-    use smooth_ccd2d::RoundedPolygon;
-    let sliver = RoundedPolygon::new(
-        &[Vector::new(-0.5, 0.0), Vector::new(-0.25, 0.0), Vector::new(0.5, 0.125)],
-        0.0,
-    );
+    let sliver = sliver();
     let h = 5.0;
     let corners = vec![
         Vector::new(-h, -h),
@@ -379,17 +384,10 @@ fn a_body_whose_tip_is_past_a_polyline_corner_moves_away_from_the_walls_without_
 #[test]
 fn a_polyline_part_keeps_its_points_data_while_its_core_manifold_comes_and_goes() {
     use parry2d_f64::query::{ContactManifold, PersistentQueryDispatcher};
-    use smooth_ccd2d::{__is_core_feature as is_core, RoundedPolygon};
-    let sliver = RoundedPolygon::new(
-        &[Vector::new(-0.5, 0.0), Vector::new(-0.25, 0.0), Vector::new(0.5, 0.125)],
-        0.0,
-    );
+    use smooth_ccd2d::__is_core_feature as is_core;
+    let sliver = sliver();
     let wall = Polyline::new(vec![Vector::new(-10.0, 0.0), Vector::new(10.0, 0.0)], None);
-    let at = |tilt: f64| {
-        let side = Vector::new(1.0, 0.125);
-        let rot = parry2d_f64::math::Rotation::new(core::f64::consts::PI - tilt - side.y.atan2(side.x));
-        Pose::from_parts(-(rot * Vector::new(-0.5, 0.0)), rot)
-    };
+    let at = |tilt: f64| tip_on_wall(0.0, tilt);
     let d = SmoothDispatcher::default();
     let mut manifolds: Vec<ContactManifold<(), u32>> = Vec::new();
     let mut workspace = None;
@@ -431,14 +429,9 @@ fn a_polyline_part_keeps_its_points_data_while_its_core_manifold_comes_and_goes(
 #[test]
 fn a_heightfield_part_keeps_the_far_point_and_its_core_contact_in_two_manifolds() {
     use parry2d_f64::query::{ContactManifold, PersistentQueryDispatcher};
-    use smooth_ccd2d::{__is_core_feature as is_core, RoundedPolygon};
-    let sliver = RoundedPolygon::new(
-        &[Vector::new(-0.5, 0.0), Vector::new(-0.25, 0.0), Vector::new(0.5, 0.125)],
-        0.0,
-    );
-    let side = Vector::new(1.0, 0.125);
-    let rot = parry2d_f64::math::Rotation::new(core::f64::consts::PI - 0.3 - side.y.atan2(side.x));
-    let pos12 = Pose::from_parts(Vector::new(2.0, 0.0) - rot * Vector::new(-0.5, 0.0), rot);
+    use smooth_ccd2d::__is_core_feature as is_core;
+    let sliver = sliver();
+    let pos12 = tip_on_wall(2.0, 0.3);
     let field = HeightField::new(vec![0.0, 0.0, 0.0], Vector::new(20.0, 1.0));
     let mut manifolds: Vec<ContactManifold<(), ()>> = Vec::new();
     SmoothDispatcher::default()

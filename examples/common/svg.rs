@@ -7,6 +7,18 @@ use std::path::PathBuf;
 /// The output folder: the first command-line argument, or `target/examples-out` under the crate's
 /// root (wherever the example is run from); created.
 pub fn out_dir() -> PathBuf {
+    // A flag (`--help`, a mistyped option) is not a folder: say what the example takes.
+    if let Some(flag) = std::env::args().nth(1).filter(|a| a.starts_with('-')) {
+        let name = std::env::args().next().unwrap_or_default();
+        let name = std::path::Path::new(&name)
+            .file_name()
+            .map_or(name.clone(), |n| n.to_string_lossy().into_owned());
+        eprintln!(
+            "usage: cargo run --release --example {name} [-- OUTPUT_FOLDER]\n\
+             (the SVG goes to OUTPUT_FOLDER, by default target/examples-out under the crate; `{flag}` is not a folder)"
+        );
+        std::process::exit(if flag == "--help" || flag == "-h" { 0 } else { 2 });
+    }
     let dir = std::env::args().nth(1).map_or_else(
         || {
             PathBuf::from(env!("CARGO_MANIFEST_DIR"))

@@ -130,7 +130,8 @@ impl Default for SmoothDispatcher {
 }
 
 impl SmoothDispatcher {
-    /// The most steps parry's nonlinear cast (`parry_fallback::parry_cast_nonlinear`) may take,
+    /// The most steps parry's nonlinear cast (the dispatcher's fallback for the pairs its own
+    /// casts do not take) may take,
     /// and the most relative turns, and travels of the pair's size (sum of bounding radii), in
     /// its window: a window holding more is refused with `Unsupported` (parry would run for
     /// hours).

@@ -39,8 +39,8 @@ macro_rules! moving_pairs_rapier {
         /// boxes overlap and that rapier would make collide (collision groups, solver groups,
         /// the `FILTER_CONTACT_PAIRS` hook), it finds the exact first time of impact of the two
         /// motions over the step — each body from its pose before the step to its pose after
-        /// it, at constant velocity and constant spin (`StepPath`, the turn unwrapped to the
-        /// spin rapier integrated) — earliest first; stops both bodies at their poses at that
+        /// it, at constant velocity and constant spin (the turn unwrapped to the spin rapier
+        /// integrated) — earliest first; stops both bodies at their poses at that
         /// time (velocities kept: the next step's solver resolves the contact, as after
         /// rapier's own CCD clamp), and checks the other pairs of a stopped body again with
         /// its shortened motion. A kinematic body is never stopped. Sensor pairs stop nothing:
