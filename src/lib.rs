@@ -139,6 +139,8 @@ pub use curve::{ConvexCurve, CurvePoint, SupportJet};
 #[doc(hidden)]
 pub use dispatcher::is_core_feature as __is_core_feature;
 #[doc(hidden)]
+pub use dispatcher::rule3_line_contact as __rule3_line_contact;
+#[doc(hidden)]
 pub use dispatcher::{impact_weights as __impact_weights, ImpactSide as __ImpactSide};
 pub use dispatcher::{shape_time_of_impact, CastPolicy, SmoothDispatcher};
 #[cfg(feature = "rapier")]

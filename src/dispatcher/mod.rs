@@ -78,6 +78,8 @@ pub use core_disc::is_core_feature;
 pub use core_hooks::{CoreContactHooks, OneBounceHooks};
 #[doc(hidden)]
 pub use impact_row::{impact_weights, ImpactSide};
+#[doc(hidden)]
+pub use rapier_rule::rule3_line_contact;
 pub use rapier_rule::CastPolicy;
 
 use crate::error::QueryError;

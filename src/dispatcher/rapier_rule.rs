@@ -400,18 +400,72 @@ pub(crate) fn start_contact_answer(
 
 /// The start contact `k0` of a cast with a `Segment` (a wall of no thickness: standalone, or a
 /// part of a polyline) taken from the side of the other body's centre, where it differs from
-/// the exact contact (`segment_side`): the contact the manifold hands rapier's solver. The
-/// exact contact of a body whose tip a spin has pushed past a wall near its end (past the
-/// corner of a box of segments) is the segment's end inside the body, which a translation
-/// *away* from the wall takes deeper; rule 3 on it stopped such a body at the start of every
-/// step while the solver, on the contact from the centre's side, saw it leaving.
+/// the exact contact (`segment_side`): the normal of the contact the manifold hands rapier's
+/// solver, its depth measured on the segment's whole line — the body's reach past the line
+/// (its support point along the normal), which is the manifold's where the body's deepest point
+/// lies over the segment and deeper where it lies beyond an end, and which a translation changes
+/// linearly. The exact contact of a body whose tip a spin has pushed past a wall near its end
+/// (past the corner of a box of segments) is the segment's end inside the body, which a
+/// translation *away* from the wall takes deeper; rule 3 on it stopped such a body at the start
+/// of every step while the solver, on the contact from the centre's side, saw it leaving.
 fn centre_side(c: &NonlinearCast, k0: &Contact) -> Option<Contact> {
+    let pos12 = super::cast::pos12_at(c.m1, c.m2, c.t0);
+    line_contact(k0, &pos12, c.g1, c.g2, c.m1.local_center, c.m2.local_center)
+}
+
+/// [`centre_side`] of the start contact `k0` of `g1` and `g2` at `pos12`, with the rotation
+/// centres `centre1`, `centre2` in their own frames.
+fn line_contact(
+    k0: &Contact,
+    pos12: &Pose,
+    g1: &dyn Shape,
+    g2: &dyn Shape,
+    centre1: Vector,
+    centre2: Vector,
+) -> Option<Contact> {
     use parry2d_f64::shape::Segment;
-    if c.g1.as_shape::<Segment>().is_none() && c.g2.as_shape::<Segment>().is_none() {
+    let (seg1, seg2) = (g1.as_shape::<Segment>(), g2.as_shape::<Segment>());
+    if seg1.is_none() && seg2.is_none() {
         return None;
     }
-    let pos12 = super::cast::pos12_at(c.m1, c.m2, c.t0);
-    super::segment_side::centre_side_contact(k0, &pos12, c.g1, c.g2, c.m1.local_center, c.m2.local_center)
+    let k = super::segment_side::centre_side_contact(k0, pos12, g1, g2, centre1, centre2)?;
+    let n = k.normal;
+    // The body's reach past the line along n (body 1's frame, from body 1 to body 2).
+    let dist = match (seg1, seg2) {
+        (_, Some(seg)) => {
+            let p = g1.as_support_map()?.local_support_point(n);
+            (*pos12 * seg.a - p).dot(n)
+        }
+        (Some(seg), None) => {
+            let p = *pos12 * g2.as_support_map()?.local_support_point(pos12.rotation.inverse() * -n);
+            (p - seg.a).dot(n)
+        }
+        (None, None) => return None,
+    };
+    dist.is_finite().then_some(Contact { dist, ..k })
+}
+
+/// The contact rule 3 measures a start contact of `g1` and `g2` (`g2` at `pos12` in `g1`'s frame,
+/// `centre1`, `centre2` their rotation centres in their own frames) on, where it is not the
+/// exact contact: against a `Segment`, the contact from the side of the other body's centre, its
+/// depth on the segment's line ([`centre_side`]), as (its normal from `g1` to `g2` in `g1`'s
+/// frame, its signed distance).
+/// `None` where rule 3 reads the exact contact (or the contact query does not read the pair).
+/// Not a public API: the judge of rapier's casts in `cargo bench --bench ratios -- rapier-casts`
+/// reads which contact the rule takes, and times it with its own reference.
+#[doc(hidden)]
+pub fn rule3_line_contact(
+    pos12: &Pose,
+    g1: &dyn Shape,
+    g2: &dyn Shape,
+    centre1: Vector,
+    centre2: Vector,
+) -> Option<(Vector, Real)> {
+    // The start contact as rapier's fast path computes it (`cast::rapier_fast_path`).
+    let (mut st1, mut st2) = (SupportScratch::default(), SupportScratch::default());
+    let (s1, s2) = (support_shape(g1, &mut st1)?, support_shape(g2, &mut st2)?);
+    let k0 = super::support_shape::exact_contact_of(s1, s2, pos12, None)?;
+    line_contact(&k0, pos12, g1, g2, centre1, centre2).map(|k| (k.normal, k.dist))
 }
 
 /// The first time in the window at which the translations of the cast (its motions without

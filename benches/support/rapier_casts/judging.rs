@@ -159,6 +159,37 @@ fn earlier(a: RefToi, b: RefToi) -> RefToi {
     e
 }
 
+/// The contact rule 3 measures `c`'s start contact on where it is not the exact one (against a
+/// `Segment`, the contact from the side of the body's centre): its normal from the body to the
+/// target in the body's frame and its signed distance.
+fn line_contact(c: &RCase) -> Option<(Vector, f64)> {
+    let pos12 = c.motion.start.inv_mul(&c.target_pose);
+    smooth_ccd2d::__rule3_line_contact(&pos12, &*c.ours, &*c.target_shape, c.motion.local_center, Vector::ZERO)
+}
+
+/// The half-plane behind a segment's line, on the side away from the body (`n`: the normal from
+/// the body to the segment, the body's frame at the start), as a box of half-side `L` = 10³ m
+/// whose face lies on the line, centred on the foot of the body's centre there: the body's signed
+/// distance to it is its reach past the line while the body stays within `L` along it. The box
+/// and its pose.
+fn half_plane_behind(c: &RCase, n: Vector) -> (ParryCurve, Pose) {
+    const L: f64 = 1e3;
+    let seg = c.target_shape.as_shape::<Segment>().expect("a segment target");
+    let on_line = c.target_pose * seg.a;
+    let out = c.motion.start.rotation * (-n); // from the line towards the body, in the world
+    let centre = c.motion.start * c.motion.local_center;
+    let foot = centre - out * (centre - on_line).dot(out);
+    // The box's +y axis along `out`, its top face on the line.
+    let rotation = parry2d_f64::math::Rotation::new(out.y.atan2(out.x) - core::f64::consts::FRAC_PI_2);
+    let pose = Pose::from_parts(foot - out * L, rotation);
+    let shape = ParryCurve {
+        shape: Arc::new(Cuboid::new(Vector::new(L, L))),
+        shift: Vector::ZERO,
+        offset: 0.0,
+    };
+    (shape, pose)
+}
+
 /// Judges both answers of `c`.
 pub fn judge_case(c: &RCase, ours: Option<f64>, parry: Option<f64>) -> Judged {
     let size = c
@@ -195,23 +226,45 @@ pub fn judge_case(c: &RCase, ours: Option<f64>, parry: Option<f64>) -> Judged {
                 angvel: 0.0,
                 ..c.motion
             };
-            let level = (-OUR_ALLOWANCE * r).min(c.d0 - OUR_ALLOWANCE * r);
             let fixed = NonlinearRigidMotion::constant_position(c.target_pose);
             let target = ParryCurve {
                 shape: c.target_shape.clone(),
                 shift: Vector::ZERO,
                 offset: 0.0,
             };
-            let trans = reference_toi_with(
-                &*c.ours_curve,
-                &spinless,
-                &target,
-                &fixed,
-                0.0,
-                DT,
-                level,
-                &nlerp_opts(),
-            );
+            let trans = match line_contact(c) {
+                // Against a segment with the body's centre on one side: the contact from the
+                // centre's side, the body's reach past the segment's line (the rule's choice of
+                // contact is the crate's, `__rule3_line_contact`; its time the reference's).
+                Some((n, d_line)) => {
+                    let level = (-OUR_ALLOWANCE * r).min(d_line - OUR_ALLOWANCE * r);
+                    let (half_plane, pose) = half_plane_behind(c, n);
+                    let behind = NonlinearRigidMotion::constant_position(pose);
+                    reference_toi_with(
+                        &*c.ours_curve,
+                        &spinless,
+                        &half_plane,
+                        &behind,
+                        0.0,
+                        DT,
+                        level,
+                        &nlerp_opts(),
+                    )
+                }
+                None => {
+                    let level = (-OUR_ALLOWANCE * r).min(c.d0 - OUR_ALLOWANCE * r);
+                    reference_toi_with(
+                        &*c.ours_curve,
+                        &spinless,
+                        &target,
+                        &fixed,
+                        0.0,
+                        DT,
+                        level,
+                        &nlerp_opts(),
+                    )
+                }
+            };
             let centre = NonlinearRigidMotion::new(
                 Pose::from_translation(c.motion.start * c.motion.local_center),
                 Vector::ZERO,
