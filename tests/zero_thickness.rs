@@ -10,6 +10,8 @@
 //! sliding along (0.0017 deeper over the step) or away, no hit; driven in at 60 m/s, a hit where
 //! the contact is 0.05 deep, well inside the step.
 
+mod common;
+
 use parry2d_f64::math::{Pose, Vector};
 use parry2d_f64::query::{DefaultQueryDispatcher, NonlinearRigidMotion, QueryDispatcher};
 use parry2d_f64::shape::{Ball, HalfSpace, HeightField, Polyline, Segment, Shape, TriMesh};
@@ -472,13 +474,8 @@ fn rule_3_against_a_segment_stops_a_body_the_allowance_past_the_line_from_its_ce
     let allowance = smooth_ccd2d::CastPolicy::ALLOWANCE * inradius;
     let d = SmoothDispatcher::default();
     let still = NonlinearRigidMotion::identity();
-    let mut state: u64 = 777;
-    let mut r = || {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        (state >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut rng = common::rng::Rng::new(777);
+    let mut r = || rng.unit();
     let (mut read, mut beyond) = (0, 0);
     for _ in 0..200 {
         let rot = parry2d_f64::math::Rotation::new(core::f64::consts::TAU * r());
