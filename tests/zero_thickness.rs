@@ -481,7 +481,7 @@ fn rule_3_against_a_segment_stops_a_body_the_allowance_past_the_line_from_its_ce
         let rot = parry2d_f64::math::Rotation::new(core::f64::consts::TAU * r());
         let centre = Vector::new(0.5 + 0.49 * r(), 0.02 + 0.03 * r());
         let pose = Pose::from_parts(centre - rot * centroid, rot);
-        let Some((n, depth)) = smooth_ccd2d::__rule3_line_contact(&pose, &seg, &sliver, Vector::ZERO, centroid) else {
+        let Some((n, depth)) = smooth_ccd2d::__rule3_line_contact(&pose, &seg, &sliver) else {
             continue;
         };
         read += 1;

@@ -513,9 +513,11 @@ pub(crate) fn add_part_core<M, C: Default + Copy>(
 /// and where [`insert_core_point`] would take the place of the second of two points, into `own`
 /// instead, both points kept (a face that a spin turns into the part keeps its speculative far
 /// point, which rapier's solver takes when the velocities close it within the step). `own` is
-/// emptied otherwise; its point keeps its id's impulse from the last call (rapier's warm start).
-/// (Tried the other way round, the core contact in place of the far point and the far point in
-/// `own`: the CCD scene suite's chain box took 4 % more instructions, not fewer.)
+/// emptied otherwise; its point keeps its id's impulse from the last call while it stays in `own`
+/// (rapier's warm start; a core contact that moves between the points' manifold, beside a lone
+/// point, and `own` starts afresh). (Tried the other way round, the core contact in place of the
+/// far point and the far point in `own`: the CCD scene suite's chain box took 4 % more
+/// instructions, not fewer.)
 pub(crate) fn place_part_core<M, C: Default + Copy>(
     pos12: &Pose,
     n: Vector,

@@ -161,8 +161,9 @@ macro_rules! composite_part_manifolds {
                 &mut |part, (part_pos1, part_shape1, normal_constraints1)| {
                     // The part's manifolds from the last call, moved to the end of the list, or new
                     // ones there (their sub-shape ids and poses set here), its core's always (taken
-                    // out again below when empty); a list changed by someone else since (shorter)
-                    // reads as new.
+                    // out again below when empty). The list is taken to be the one this
+                    // bookkeeping returned last, as parry's helper takes it (rapier only clears
+                    // it); a shorter one reads as new.
                     let fresh = || {
                         let mut m = ContactManifold::new();
                         if flipped {

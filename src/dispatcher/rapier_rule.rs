@@ -65,7 +65,7 @@
 //! parts over as shape 1, still).
 
 use super::cast::{toi_to_parry, NonlinearCast};
-use super::core_disc::core_of;
+use super::core_disc::{core_of, core_of_any};
 use super::support_shape::{exact_contact, support_shape, SupportScratch};
 use super::translation_level::{translation_time_to_level, LevelTime, Translating};
 use crate::error::QueryError;
@@ -410,25 +410,21 @@ pub(crate) fn start_contact_answer(
 /// of every step while the solver, on the contact from the centre's side, saw it leaving.
 fn centre_side(c: &NonlinearCast, k0: &Contact) -> Option<Contact> {
     let pos12 = super::cast::pos12_at(c.m1, c.m2, c.t0);
-    line_contact(k0, &pos12, c.g1, c.g2, c.m1.local_center, c.m2.local_center)
+    line_contact(k0, &pos12, c.g1, c.g2)
 }
 
-/// [`centre_side`] of the start contact `k0` of `g1` and `g2` at `pos12`, with the rotation
-/// centres `centre1`, `centre2` in their own frames.
-fn line_contact(
-    k0: &Contact,
-    pos12: &Pose,
-    g1: &dyn Shape,
-    g2: &dyn Shape,
-    centre1: Vector,
-    centre2: Vector,
-) -> Option<Contact> {
+/// [`centre_side`] of the start contact `k0` of `g1` and `g2` at `pos12`. The side is that of
+/// the body's centroid, as the manifold takes it (`core_of_any`: the same centre, not the
+/// rotation centre of the cast's motion, which differs for a collider off its body's centre of
+/// mass); `None` for two segments (neither has a side).
+fn line_contact(k0: &Contact, pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape) -> Option<Contact> {
     use parry2d_f64::shape::Segment;
     let (seg1, seg2) = (g1.as_shape::<Segment>(), g2.as_shape::<Segment>());
-    if seg1.is_none() && seg2.is_none() {
+    if seg1.is_some() == seg2.is_some() {
         return None;
     }
-    let k = super::segment_side::centre_side_contact(k0, pos12, g1, g2, centre1, centre2)?;
+    let (core1, core2) = (core_of_any(g1)?, core_of_any(g2)?);
+    let k = super::segment_side::centre_side_contact(k0, pos12, g1, g2, core1.centre, core2.centre)?;
     let n = k.normal;
     // The body's reach past the line along n (body 1's frame, from body 1 to body 2).
     let dist = match (seg1, seg2) {
@@ -445,27 +441,20 @@ fn line_contact(
     dist.is_finite().then_some(Contact { dist, ..k })
 }
 
-/// The contact rule 3 measures a start contact of `g1` and `g2` (`g2` at `pos12` in `g1`'s frame,
-/// `centre1`, `centre2` their rotation centres in their own frames) on, where it is not the
-/// exact contact: against a `Segment`, the contact from the side of the other body's centre, its
+/// The contact rule 3 measures a start contact of `g1` and `g2` (`g2` at `pos12` in `g1`'s frame)
+/// on, where it is not the exact contact: against a `Segment`, the contact from the side of the other body's centre, its
 /// depth on the segment's line ([`centre_side`]), as (its normal from `g1` to `g2` in `g1`'s
 /// frame, its signed distance).
 /// `None` where rule 3 reads the exact contact (or the contact query does not read the pair).
 /// Not a public API: the judge of rapier's casts in `cargo bench --bench ratios -- rapier-casts`
 /// reads which contact the rule takes, and times it with its own reference.
 #[doc(hidden)]
-pub fn rule3_line_contact(
-    pos12: &Pose,
-    g1: &dyn Shape,
-    g2: &dyn Shape,
-    centre1: Vector,
-    centre2: Vector,
-) -> Option<(Vector, Real)> {
+pub fn rule3_line_contact(pos12: &Pose, g1: &dyn Shape, g2: &dyn Shape) -> Option<(Vector, Real)> {
     // The start contact as rapier's fast path computes it (`cast::rapier_fast_path`).
     let (mut st1, mut st2) = (SupportScratch::default(), SupportScratch::default());
     let (s1, s2) = (support_shape(g1, &mut st1)?, support_shape(g2, &mut st2)?);
     let k0 = super::support_shape::exact_contact_of(s1, s2, pos12, None)?;
-    line_contact(&k0, pos12, g1, g2, centre1, centre2).map(|k| (k.normal, k.dist))
+    line_contact(&k0, pos12, g1, g2).map(|k| (k.normal, k.dist))
 }
 
 /// The first time in the window at which the translations of the cast (its motions without

@@ -344,6 +344,17 @@ fn a_ball_curve_of_no_or_negative_radius_is_degenerate_in_every_free_query() {
     let m1 = NonlinearRigidMotion::new(Pose::IDENTITY, Vector::ZERO, Vector::new(10.0, 0.0), 0.0);
     let m2 = NonlinearRigidMotion::new(pos12, Vector::ZERO, Vector::ZERO, 0.0);
     let hs = HalfSpace::new(Vector::Y);
+    // Moving away: the circles of any positive radii stay apart (the test would answer true).
+    let away = NonlinearRigidMotion::new(Pose::IDENTITY, Vector::ZERO, Vector::new(-10.0, 0.0), 0.0);
+    assert!(bounding_circles_part(
+        &e,
+        &away,
+        &BallCurve::new(0.5),
+        &m2,
+        0.0,
+        1.0,
+        0.0
+    ));
     for radius in [-1.0, 0.0, -0.0, f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
         let b = BallCurve { radius };
         let d = stationary_distance(&e, &b, &pos12, &DistanceOptions::default());
@@ -383,7 +394,7 @@ fn a_ball_curve_of_no_or_negative_radius_is_degenerate_in_every_free_query() {
             "time_of_impact_halfspace, radius {radius}"
         );
         assert!(
-            !bounding_circles_part(&e, &m1, &b, &m2, 0.0, 1.0, 0.0),
+            !bounding_circles_part(&e, &away, &b, &m2, 0.0, 1.0, 0.0),
             "bounding_circles_part, radius {radius}"
         );
         assert!(BallCurve::try_new(radius).is_err(), "try_new, radius {radius}");

@@ -164,7 +164,7 @@ fn earlier(a: RefToi, b: RefToi) -> RefToi {
 /// target in the body's frame and its signed distance.
 fn line_contact(c: &RCase) -> Option<(Vector, f64)> {
     let pos12 = c.motion.start.inv_mul(&c.target_pose);
-    smooth_ccd2d::__rule3_line_contact(&pos12, &*c.ours, &*c.target_shape, c.motion.local_center, Vector::ZERO)
+    smooth_ccd2d::__rule3_line_contact(&pos12, &*c.ours, &*c.target_shape)
 }
 
 /// The half-plane behind a segment's line, on the side away from the body (`n`: the normal from
